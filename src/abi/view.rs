@@ -1,0 +1,172 @@
+//! Safe views of `mjModel` and `mjData`: every array as a slice of its X-macro length.
+//!
+//! The engine and compiler work only on these views. Building one is the single unsafe step:
+//! it trusts that the struct's pointers address disjoint arrays of the sizes the X-macro
+//! lists give, which `mj_makeModel`/`mj_makeData` guarantee.
+
+use super::*;
+use std::os::raw::c_char;
+
+macro_rules! elem_ty {
+    (int) => { i32 };
+    (mjtNum) => { f64 };
+    (float) => { f32 };
+    (char) => { c_char };
+    (mjtByte) => { u8 };
+    (mjContact) => { mjContact };
+}
+
+/// Second dimension of an X-macro row.
+macro_rules! dim2 {
+    ($m:expr, @ $f:ident * $k:literal) => { ($m.$f as usize) * $k };
+    ($m:expr, $k:expr) => { $k as usize };
+}
+
+/// Number of elements of an X-macro row, saturating at zero for corrupt sizes.
+macro_rules! row_len {
+    ($m:expr, $d1:ident, $($d2:tt)+) => { ($m.$d1.max(0) as usize) * dim2!($m, $($d2)+) };
+}
+pub(crate) use row_len;
+
+unsafe fn view<'a, T>(ptr: *const T, len: usize) -> &'a [T] {
+    if len == 0 || ptr.is_null() {
+        &[]
+    } else {
+        std::slice::from_raw_parts(ptr, len)
+    }
+}
+
+unsafe fn view_mut<'a, T>(ptr: *mut T, len: usize) -> &'a mut [T] {
+    if len == 0 || ptr.is_null() {
+        &mut []
+    } else {
+        std::slice::from_raw_parts_mut(ptr, len)
+    }
+}
+
+macro_rules! model_views {
+    ($(($t:ident, $name:ident, $d1:ident, $($d2:tt)+)),* $(,)?) => {
+        /// Read-only view of a compiled model.
+        pub struct Model<'a> {
+            pub raw: &'a mjModel,
+            $(pub $name: &'a [elem_ty!($t)],)*
+        }
+
+        /// Writable view of a model under construction (compiler, `mj_setConst`).
+        pub struct ModelMut<'a> {
+            $(pub $name: &'a mut [elem_ty!($t)],)*
+        }
+
+        impl<'a> Model<'a> {
+            /// # Safety
+            /// `m` must come from `mj_makeModel` (or have the same array layout).
+            pub unsafe fn new(m: &'a mjModel) -> Self {
+                Model { raw: m, $($name: view(m.$name, row_len!(m, $d1, $($d2)+)),)* }
+            }
+        }
+
+        impl<'a> ModelMut<'a> {
+            /// # Safety
+            /// `m` must come from `mj_makeModel`; the arrays must not be aliased elsewhere.
+            pub unsafe fn new(m: &'a mut mjModel) -> Self {
+                ModelMut { $($name: view_mut(m.$name, row_len!(m, $d1, $($d2)+)),)* }
+            }
+        }
+    };
+}
+mjmodel_pointers!(model_views);
+
+macro_rules! data_views {
+    ($(($t:ident, $name:ident, $d1:ident, $($d2:tt)+)),* $(,)?) => {
+        /// Writable view of simulation data: every array, the header scalars and the stack.
+        pub struct Data<'a> {
+            /// Header: scalars, diagnostics, warnings (pointers in it must not be changed).
+            pub raw: &'a mut mjData,
+            /// Scratch space from the `mjData` stack.
+            pub arena: Arena<'a>,
+            $(pub $name: &'a mut [elem_ty!($t)],)*
+        }
+
+        impl<'a> Data<'a> {
+            /// # Safety
+            /// `d` must come from `mj_makeData(m)` for this model.
+            pub unsafe fn new(m: &mjModel, d: &'a mut mjData) -> Self {
+                let pstack = d.pstack.clamp(0, d.nstack) as usize;
+                let stack = view_mut(d.stack, d.nstack.max(0) as usize);
+                let arena = Arena { free: &mut stack[pstack..], used: pstack, peak: pstack };
+                $(let $name = view_mut(d.$name, row_len!(m, $d1, $($d2)+));)*
+                Data { raw: d, arena, $($name,)* }
+            }
+        }
+    };
+}
+mjdata_pointers!(data_views);
+
+impl Drop for Data<'_> {
+    fn drop(&mut self) {
+        let peak = self.arena.peak as i32;
+        if peak > self.raw.maxuse_stack {
+            self.raw.maxuse_stack = peak;
+        }
+    }
+}
+
+/// Error raised by the core; the C API reports it through `mju_error`.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct EngineError(pub String);
+
+impl std::fmt::Display for EngineError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+/// Stack-discipline scratch allocator over the free part of the `mjData` stack.
+///
+/// Allocations live until the arena (or the `scope` that made them) ends.
+pub struct Arena<'a> {
+    free: &'a mut [f64],
+    used: usize,
+    peak: usize,
+}
+
+impl<'a> Arena<'a> {
+    /// An arena over caller-owned memory (tests, compiler scratch).
+    pub fn over(buf: &'a mut [f64]) -> Self {
+        Arena { free: buf, used: 0, peak: 0 }
+    }
+
+    /// `n` zeroed mjtNums, or an error like 2.2.2's "Stack overflow".
+    pub fn alloc(&mut self, n: usize) -> Result<&'a mut [f64], EngineError> {
+        if n > self.free.len() {
+            return Err(EngineError("Stack overflow".into()));
+        }
+        let free = std::mem::take(&mut self.free);
+        let (head, tail) = free.split_at_mut(n);
+        self.free = tail;
+        self.used += n;
+        self.peak = self.peak.max(self.used);
+        head.fill(0.0);
+        Ok(head)
+    }
+
+    /// `n` zeroed ints, taken from the same stack (two per mjtNum).
+    pub fn alloc_int(&mut self, n: usize) -> Result<&'a mut [i32], EngineError> {
+        let words = self.alloc(n.div_ceil(2))?;
+        // SAFETY: f64 storage is 8-aligned and large enough for n i32s; zero bits are 0i32.
+        Ok(unsafe { std::slice::from_raw_parts_mut(words.as_mut_ptr() as *mut i32, n) })
+    }
+
+    /// Runs `f` with a nested arena; everything it allocates is released afterwards.
+    pub fn scope<R>(&mut self, f: impl FnOnce(&mut Arena<'_>) -> R) -> R {
+        let mut inner = Arena { free: &mut *self.free, used: self.used, peak: self.used };
+        let r = f(&mut inner);
+        self.peak = self.peak.max(inner.peak);
+        r
+    }
+
+    /// Number of mjtNums in use, counted from the bottom of the `mjData` stack.
+    pub fn used(&self) -> usize {
+        self.used
+    }
+}

@@ -1,0 +1,30 @@
+//! The `extern "C"` surface: argument checks, panic containment, calls into the core.
+
+#![allow(non_snake_case, non_upper_case_globals, clippy::missing_safety_doc)]
+
+pub mod errmem;
+pub mod globals;
+pub mod pending;
+pub mod pending_internal;
+
+use crate::abi::view::EngineError;
+
+/// Reports an entry point that has no implementation yet.
+pub fn pending(name: &str) {
+    errmem::error(&format!("{name} is not implemented"));
+}
+
+/// Runs `f`, turning a core error or a panic into `mju_error`; returns `fallback` then.
+pub fn guard<R>(name: &str, fallback: R, f: impl FnOnce() -> Result<R, EngineError>) -> R {
+    match std::panic::catch_unwind(std::panic::AssertUnwindSafe(f)) {
+        Ok(Ok(r)) => r,
+        Ok(Err(e)) => {
+            errmem::error(&e.0);
+            fallback
+        }
+        Err(_) => {
+            errmem::error(&format!("{name}: internal error"));
+            fallback
+        }
+    }
+}

@@ -1,0 +1,4 @@
+//! rujoco: a physics engine with the ABI and results of MuJoCo 2.2.2.
+
+pub mod abi;
+pub mod capi;
