@@ -7,27 +7,6 @@
 use super::*;
 use std::os::raw::c_char;
 
-macro_rules! elem_ty {
-    (int) => { i32 };
-    (mjtNum) => { f64 };
-    (float) => { f32 };
-    (char) => { c_char };
-    (mjtByte) => { u8 };
-    (mjContact) => { mjContact };
-}
-
-/// Second dimension of an X-macro row.
-macro_rules! dim2 {
-    ($m:expr, @ $f:ident * $k:literal) => { ($m.$f as usize) * $k };
-    ($m:expr, $k:expr) => { $k as usize };
-}
-
-/// Number of elements of an X-macro row, saturating at zero for corrupt sizes.
-macro_rules! row_len {
-    ($m:expr, $d1:ident, $($d2:tt)+) => { ($m.$d1.max(0) as usize) * dim2!($m, $($d2)+) };
-}
-pub(crate) use row_len;
-
 unsafe fn view<'a, T>(ptr: *const T, len: usize) -> &'a [T] {
     if len == 0 || ptr.is_null() {
         &[]

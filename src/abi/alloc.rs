@@ -1,0 +1,418 @@
+//! Memory of `mjModel` and `mjData` laid out as 2.2.2 lays it out: one buffer per struct, the
+//! X-macro arrays in order, each starting on a 64-byte boundary; the mjData stack apart.
+
+use super::*;
+use crate::capi::errmem::{free, malloc};
+use std::os::raw::c_void;
+
+const ALIGN: usize = 64;
+
+fn pad(offset: usize) -> usize {
+    (ALIGN - offset % ALIGN) % ALIGN
+}
+
+/// Total buffer size of rows `(elem size, count)`, or None on overflow.
+fn buffer_size(rows: impl Iterator<Item = (usize, usize)>) -> Option<usize> {
+    let mut size: usize = 0;
+    for (elem, count) in rows {
+        size = size.checked_add(pad(size))?.checked_add(elem.checked_mul(count)?)?;
+    }
+    (size <= i32::MAX as usize).then_some(size)
+}
+
+macro_rules! model_rows {
+    ($(($t:ident, $name:ident, $d1:ident, $($d2:tt)+)),* $(,)?) => {
+        fn model_rows(m: &mjModel) -> Vec<(&'static str, usize, usize)> {
+            vec![$((stringify!($name), std::mem::size_of::<elem_ty!($t)>(), row_len!(m, $d1, $($d2)+)),)*]
+        }
+        unsafe fn set_model_pointers(m: &mut mjModel) {
+            let base = m.buffer as *mut u8;
+            let mut off = 0usize;
+            $(
+                off += pad(off);
+                m.$name = base.add(off) as *mut elem_ty!($t);
+                off += std::mem::size_of::<elem_ty!($t)>() * row_len!(m, $d1, $($d2)+);
+            )*
+            debug_assert_eq!(off, m.nbuffer as usize);
+        }
+    };
+}
+mjmodel_pointers!(model_rows);
+
+macro_rules! data_rows {
+    ($(($t:ident, $name:ident, $d1:ident, $($d2:tt)+)),* $(,)?) => {
+        fn data_rows(m: &mjModel) -> Vec<(&'static str, usize, usize)> {
+            vec![$((stringify!($name), std::mem::size_of::<elem_ty!($t)>(), row_len!(m, $d1, $($d2)+)),)*]
+        }
+        unsafe fn set_data_pointers(m: &mjModel, d: &mut mjData) {
+            let base = d.buffer as *mut u8;
+            let mut off = 0usize;
+            $(
+                off += pad(off);
+                d.$name = base.add(off) as *mut elem_ty!($t);
+                off += std::mem::size_of::<elem_ty!($t)>() * row_len!(m, $d1, $($d2)+);
+            )*
+            debug_assert_eq!(off, d.nbuffer as usize);
+        }
+    };
+}
+mjdata_pointers!(data_rows);
+
+macro_rules! model_int_names {
+    ($(($name:ident)),* $(,)?) => {
+        /// The int fields of mjModel in X-macro order, with their values.
+        pub fn model_ints(m: &mjModel) -> Vec<(&'static str, i32)> {
+            vec![$((stringify!($name), m.$name),)*]
+        }
+    };
+}
+mjmodel_ints!(model_int_names);
+
+/// Allocates a model whose int fields are copied from `sizes`; arrays zeroed, default options.
+pub fn make_model(sizes: &mjModel) -> Result<*mut mjModel, String> {
+    for (name, v) in model_ints(sizes) {
+        if v < 0 {
+            return Err(format!("Invalid model: negative {name}"));
+        }
+    }
+    if sizes.nbody == 0 {
+        return Err("Invalid model: nbody == 0".into());
+    }
+    if sizes.nmocap >= i32::MAX / 4 {
+        return Err("Invalid model: nmocap too large".into());
+    }
+    let rows = model_rows(sizes);
+    let nbuffer = buffer_size(rows.iter().map(|r| (r.1, r.2))).ok_or("Invalid model: buffer too large")?;
+    // SAFETY: all-zero bits are a valid mjModel (null pointers, zero numbers).
+    let mut header: mjModel = unsafe { std::mem::zeroed() };
+    copy_ints(&mut header, sizes);
+    header.nbuffer = nbuffer as i32;
+    header.opt = default_option();
+    header.vis = default_visual();
+    header.stat = default_statistic();
+    let m = malloc(std::mem::size_of::<mjModel>()) as *mut mjModel;
+    let buffer = malloc(nbuffer.max(1));
+    if m.is_null() || buffer.is_null() {
+        free(m as *mut c_void);
+        free(buffer);
+        return Err("Could not allocate mjModel".into());
+    }
+    // SAFETY: fresh allocations of the right sizes.
+    unsafe {
+        std::ptr::write_bytes(buffer as *mut u8, 0, nbuffer);
+        header.buffer = buffer;
+        m.write(header);
+        set_model_pointers(&mut *m);
+    }
+    Ok(m)
+}
+
+macro_rules! copy_int_fields {
+    ($(($name:ident)),* $(,)?) => {
+        fn copy_ints(dst: &mut mjModel, src: &mjModel) {
+            $(dst.$name = src.$name;)*
+        }
+    };
+}
+mjmodel_ints!(copy_int_fields);
+
+/// # Safety
+/// `m` is NULL or came from `make_model`.
+pub unsafe fn delete_model(m: *mut mjModel) {
+    if !m.is_null() {
+        free((*m).buffer);
+        free(m as *mut c_void);
+    }
+}
+
+/// Copies `src` into `dest` (same sizes) or into a new model when `dest` is NULL.
+///
+/// # Safety
+/// `dest` is NULL or came from `make_model`; `src` came from `make_model`.
+pub unsafe fn copy_model(dest: *mut mjModel, src: &mjModel) -> Result<*mut mjModel, String> {
+    let dest = if dest.is_null() { make_model(src)? } else { dest };
+    if (*dest).nbuffer != src.nbuffer {
+        return Err("dest and src models have different buffer size".into());
+    }
+    let buffer = (*dest).buffer;
+    std::ptr::copy_nonoverlapping(src as *const mjModel, dest, 1);
+    (*dest).buffer = buffer;
+    set_model_pointers(&mut *dest);
+    std::ptr::copy_nonoverlapping(src.buffer as *const u8, buffer as *mut u8, src.nbuffer as usize);
+    Ok(dest)
+}
+
+/// Size of the MJB image of a model, as `mj_sizeModel` reports it.
+pub fn size_model(m: &mjModel) -> i32 {
+    let nint = model_ints(m).len();
+    (std::mem::size_of::<i32>() * (4 + nint)
+        + std::mem::size_of::<mjOption>()
+        + std::mem::size_of::<mjVisual>()
+        + std::mem::size_of::<mjStatistic>()) as i32
+        + m.nbuffer
+}
+
+/// Allocates data for `m` without resetting it.
+fn alloc_data(m: &mjModel) -> Result<*mut mjData, String> {
+    let rows = data_rows(m);
+    let nbuffer = buffer_size(rows.iter().map(|r| (r.1, r.2))).ok_or("Invalid data: buffer too large")?;
+    let nstack = m.nstack.max(0) as usize;
+    let d = malloc(std::mem::size_of::<mjData>()) as *mut mjData;
+    let buffer = malloc(nbuffer.max(1));
+    let stack = malloc((nstack * 8).max(1));
+    if d.is_null() || buffer.is_null() || stack.is_null() {
+        free(d as *mut c_void);
+        free(buffer);
+        free(stack);
+        return Err("Could not allocate mjData".into());
+    }
+    // SAFETY: fresh allocations; all-zero bits are a valid mjData header.
+    unsafe {
+        std::ptr::write_bytes(d as *mut u8, 0, std::mem::size_of::<mjData>());
+        (*d).nbuffer = nbuffer as i32;
+        (*d).nstack = nstack as i32;
+        (*d).buffer = buffer;
+        (*d).stack = stack as *mut f64;
+        set_data_pointers(m, &mut *d);
+    }
+    Ok(d)
+}
+
+/// `mj_makeData`: allocate and reset.
+pub fn make_data(m: &mjModel) -> Result<*mut mjData, String> {
+    let d = alloc_data(m)?;
+    // SAFETY: d was just made for m.
+    unsafe { reset_data(m, &mut *d, 0) };
+    Ok(d)
+}
+
+/// # Safety
+/// `d` is NULL or came from `make_data`.
+pub unsafe fn delete_data(d: *mut mjData) {
+    if !d.is_null() {
+        free((*d).buffer);
+        free((*d).stack as *mut c_void);
+        free(d as *mut c_void);
+    }
+}
+
+/// `mj_copyData`.
+///
+/// # Safety
+/// `dest` is NULL or was made for `m`; `src` was made for `m`.
+pub unsafe fn copy_data(dest: *mut mjData, m: &mjModel, src: &mjData) -> Result<*mut mjData, String> {
+    let dest = if dest.is_null() { alloc_data(m)? } else { dest };
+    if (*dest).nbuffer != src.nbuffer {
+        return Err("dest and src data buffers have different size".into());
+    }
+    if (*dest).nstack != src.nstack {
+        return Err("dest and src stacks have different size".into());
+    }
+    if src.pstack != 0 {
+        return Err("Attempting to copy mjData while stack is in use".into());
+    }
+    let (buffer, stack) = ((*dest).buffer, (*dest).stack);
+    std::ptr::copy_nonoverlapping(src as *const mjData, dest, 1);
+    (*dest).buffer = buffer;
+    (*dest).stack = stack;
+    set_data_pointers(m, &mut *dest);
+    std::ptr::copy_nonoverlapping(src.buffer as *const u8, buffer as *mut u8, src.nbuffer as usize);
+    Ok(dest)
+}
+
+/// `mj_resetDataDebug`: clear the header, fill the buffer with `debug`, then set the state
+/// arrays to their defaults (qpos0, mocap poses from the bodies).
+///
+/// # Safety
+/// `d` was made for `m`.
+pub unsafe fn reset_data(m: &mjModel, d: &mut mjData, debug: u8) {
+    d.pstack = 0;
+    d.maxuse_stack = 0;
+    d.maxuse_con = 0;
+    d.maxuse_efc = 0;
+    d.warning = std::mem::zeroed();
+    d.timer = std::mem::zeroed();
+    std::ptr::write_bytes(d.solver.as_mut_ptr(), 0, d.solver.len());
+    d.solver_iter = 0;
+    d.solver_nnz = 0;
+    d.solver_fwdinv = [0.0; 2];
+    d.ne = 0;
+    d.nf = 0;
+    d.nefc = 0;
+    d.ncon = 0;
+    d.time = 0.0;
+    d.energy = [0.0; 2];
+    std::ptr::write_bytes(d.buffer as *mut u8, debug, d.nbuffer as usize);
+
+    let mv = view::Model::new(m);
+    let mut dv = view::Data::new(m, d);
+    for a in [&mut dv.qpos, &mut dv.qvel, &mut dv.act, &mut dv.ctrl, &mut dv.qfrc_applied, &mut dv.xfrc_applied] {
+        a.fill(0.0);
+    }
+    for a in [&mut dv.qacc, &mut dv.qacc_warmstart, &mut dv.act_dot, &mut dv.userdata, &mut dv.sensordata] {
+        a.fill(0.0);
+    }
+    dv.mocap_pos.fill(0.0);
+    dv.mocap_quat.fill(0.0);
+    dv.qpos.copy_from_slice(mv.qpos0);
+    for (i, &id) in mv.body_mocapid.iter().enumerate() {
+        if id >= 0 {
+            let id = id as usize;
+            dv.mocap_pos[3 * id..3 * id + 3].copy_from_slice(&mv.body_pos[3 * i..3 * i + 3]);
+            dv.mocap_quat[4 * id..4 * id + 4].copy_from_slice(&mv.body_quat[4 * i..4 * i + 4]);
+        }
+    }
+}
+
+/// `mj_resetDataKeyframe`: reset, then copy keyframe `key` when it exists.
+///
+/// # Safety
+/// `d` was made for `m`.
+pub unsafe fn reset_data_keyframe(m: &mjModel, d: &mut mjData, key: i32) {
+    reset_data(m, d, 0);
+    if key < 0 || key >= m.nkey {
+        return;
+    }
+    let k = key as usize;
+    let mv = view::Model::new(m);
+    let dv = view::Data::new(m, d);
+    let rows = |a: &[f64], n: usize| -> Vec<f64> { a[k * n..(k + 1) * n].to_vec() };
+    dv.raw.time = mv.key_time[k];
+    dv.qpos.copy_from_slice(&rows(mv.key_qpos, dv.qpos.len()));
+    dv.qvel.copy_from_slice(&rows(mv.key_qvel, dv.qvel.len()));
+    dv.act.copy_from_slice(&rows(mv.key_act, dv.act.len()));
+    dv.mocap_pos.copy_from_slice(&rows(mv.key_mpos, dv.mocap_pos.len()));
+    dv.mocap_quat.copy_from_slice(&rows(mv.key_mquat, dv.mocap_quat.len()));
+    dv.ctrl.copy_from_slice(&rows(mv.key_ctrl, dv.ctrl.len()));
+}
+
+pub fn default_solref() -> [f64; 2] {
+    [0.02, 1.0]
+}
+
+pub fn default_solimp() -> [f64; 5] {
+    [0.9, 0.95, 0.001, 0.5, 2.0]
+}
+
+pub fn default_option() -> mjOption {
+    mjOption {
+        timestep: 0.002,
+        apirate: 100.0,
+        impratio: 1.0,
+        tolerance: 1e-8,
+        noslip_tolerance: 1e-6,
+        mpr_tolerance: 1e-6,
+        gravity: [0.0, 0.0, -9.81],
+        wind: [0.0; 3],
+        magnetic: [0.0, -0.5, 0.0],
+        density: 0.0,
+        viscosity: 0.0,
+        o_margin: 0.0,
+        o_solref: default_solref(),
+        o_solimp: default_solimp(),
+        integrator: mjtIntegrator::mjINT_EULER as i32,
+        collision: mjtCollision::mjCOL_ALL as i32,
+        cone: mjtCone::mjCONE_PYRAMIDAL as i32,
+        jacobian: mjtJacobian::mjJAC_AUTO as i32,
+        solver: mjtSolver::mjSOL_NEWTON as i32,
+        iterations: 100,
+        noslip_iterations: 0,
+        mpr_iterations: 50,
+        disableflags: 0,
+        enableflags: 0,
+    }
+}
+
+pub fn default_lropt() -> mjLROpt {
+    mjLROpt {
+        mode: mjtLRMode::mjLRMODE_MUSCLE as i32,
+        useexisting: 1,
+        uselimit: 0,
+        accel: 20.0,
+        maxforce: 0.0,
+        timeconst: 1.0,
+        timestep: 0.01,
+        inttotal: 10.0,
+        inteval: 2.0,
+        tolrange: 0.05,
+    }
+}
+
+pub fn default_statistic() -> mjStatistic {
+    mjStatistic { meaninertia: 1.0, meanmass: 1.0, meansize: 0.2, extent: 2.0, center: [0.0; 3] }
+}
+
+pub fn default_visual() -> mjVisual {
+    let rgba = |r: f32, g: f32, b: f32, a: f32| [r, g, b, a];
+    mjVisual {
+        global: mjVisualGlobal {
+            fovy: 45.0,
+            ipd: 0.068,
+            azimuth: 90.0,
+            elevation: -45.0,
+            linewidth: 1.0,
+            glow: 0.3,
+            offwidth: 640,
+            offheight: 480,
+        },
+        quality: mjVisualQuality { shadowsize: 4096, offsamples: 4, numslices: 28, numstacks: 16, numquads: 4 },
+        headlight: mjVisualHeadlight { ambient: [0.1; 3], diffuse: [0.4; 3], specular: [0.5; 3], active: 1 },
+        map: mjVisualMap {
+            stiffness: 100.0,
+            stiffnessrot: 500.0,
+            force: 0.005,
+            torque: 0.1,
+            alpha: 0.3,
+            fogstart: 3.0,
+            fogend: 10.0,
+            znear: 0.01,
+            zfar: 50.0,
+            haze: 0.3,
+            shadowclip: 1.0,
+            shadowscale: 0.6,
+            actuatortendon: 2.0,
+        },
+        scale: mjVisualScale {
+            forcewidth: 0.1,
+            contactwidth: 0.3,
+            contactheight: 0.1,
+            connect: 0.2,
+            com: 0.4,
+            camera: 0.3,
+            light: 0.3,
+            selectpoint: 0.2,
+            jointlength: 1.0,
+            jointwidth: 0.1,
+            actuatorlength: 0.7,
+            actuatorwidth: 0.2,
+            framelength: 1.0,
+            framewidth: 0.1,
+            constraint: 0.1,
+            slidercrank: 0.2,
+        },
+        rgba: mjVisualRgba {
+            fog: rgba(0., 0., 0., 1.),
+            haze: rgba(1., 1., 1., 1.),
+            force: rgba(1., 0.5, 0.5, 1.),
+            inertia: rgba(0.8, 0.2, 0.2, 0.6),
+            joint: rgba(0.2, 0.6, 0.8, 1.),
+            actuator: rgba(0.2, 0.25, 0.2, 1.),
+            actuatornegative: rgba(0.2, 0.6, 0.9, 1.),
+            actuatorpositive: rgba(0.9, 0.4, 0.2, 1.),
+            com: rgba(0.9, 0.9, 0.9, 1.),
+            camera: rgba(0.6, 0.9, 0.6, 1.),
+            light: rgba(0.6, 0.6, 0.9, 1.),
+            selectpoint: rgba(0.9, 0.9, 0.1, 1.),
+            connect: rgba(0.2, 0.2, 0.8, 1.),
+            contactpoint: rgba(0.9, 0.6, 0.2, 1.),
+            contactforce: rgba(0.7, 0.9, 0.9, 1.),
+            contactfriction: rgba(0.9, 0.8, 0.4, 1.),
+            contacttorque: rgba(0.9, 0.7, 0.9, 1.),
+            contactgap: rgba(0.5, 0.8, 0.9, 1.),
+            rangefinder: rgba(1., 1., 0.1, 1.),
+            constraint: rgba(0.9, 0., 0., 1.),
+            slidercrank: rgba(0.5, 0.3, 0.8, 1.),
+            crankbroken: rgba(0.9, 0., 0., 1.),
+        },
+    }
+}
