@@ -2,3 +2,7 @@
 
 pub mod abi;
 pub mod capi;
+pub mod compiler;
+pub mod engine;
+pub mod math;
+pub mod xml;

@@ -2,10 +2,14 @@
 
 #![allow(non_snake_case, non_upper_case_globals, clippy::missing_safety_doc)]
 
+pub mod engine;
 pub mod errmem;
 pub mod globals;
+pub mod io;
 pub mod pending;
 pub mod pending_internal;
+pub mod util;
+pub mod xml;
 
 use crate::abi::view::EngineError;
 

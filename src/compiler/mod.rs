@@ -1,0 +1,1 @@
+//! Model description to `mjModel`.

@@ -1,0 +1,1 @@
+//! The simulation pipeline, one module per stage of MuJoCo's computation chapter.

@@ -1,0 +1,1 @@
+//! Spatial algebra, quaternions, small dense and sparse linear algebra.

@@ -1,0 +1,1 @@
+//! MJCF and URDF readers: XML into a model description.
