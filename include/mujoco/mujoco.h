@@ -72,8 +72,6 @@ int mj_deleteFileVFS(mjVFS *vfs, const char *filename);
 
 void mj_deleteVFS(mjVFS *vfs);
 
-mjModel *mj_loadXML(const char *filename, const mjVFS *vfs, char *error, int error_sz);
-
 int mj_saveLastXML(const char *filename, const mjModel *m, char *error, int error_sz);
 
 void mj_freeLastXML(void);
@@ -573,6 +571,8 @@ void mjd_transitionFD(const mjModel *m,
                       mjtNum *B,
                       mjtNum *C,
                       mjtNum *D);
+
+mjModel *mj_loadXML(const char *filename, const mjVFS *vfs, char *error, int error_sz);
 
 #ifdef __cplusplus
 }  // extern "C"
