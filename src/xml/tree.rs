@@ -68,22 +68,33 @@ pub fn parse(text: &str) -> Result<Element, String> {
     let mut root: Option<Element> = None;
     loop {
         let before = reader.buffer_position() as usize;
-        let ev = reader.read_event().map_err(|err| {
-            let at = lines.line(reader.error_position() as usize);
-            format!("XML parse error: {err}\nLine number={at}\n")
-        })?;
-        let after = reader.buffer_position() as usize;
-        // start of the tag: the last '<' before the end of the event
-        let tag_line = |len: usize| {
-            let start = after.saturating_sub(len).max(before);
-            let start = text[..start.min(text.len())]
-                .rfind('<')
-                .map_or(start, |p| p.max(before));
-            lines.line(start)
+        let ev = match reader.read_event() {
+            Ok(ev) => ev,
+            Err(quick_xml::Error::IllFormed(
+                quick_xml::errors::IllFormedError::MismatchedEndTag { .. },
+            )) => {
+                let (name, line) = stack.last().map_or(("", 0), |e| (e.name.as_str(), e.line));
+                return Err(format!(
+                    "XML parse error 14:\nError=XML_ERROR_MISMATCHED_ELEMENT ErrorID=14 (0xe) \
+                     Line number={line}: XMLElement name={name}\n"
+                ));
+            }
+            Err(err) => {
+                let at = lines.line(reader.error_position() as usize);
+                return Err(format!("XML parse error: {err}\nLine number={at}\n"));
+            }
+        };
+        // the tag starts at the first '<' of the bytes this event consumed
+        let tag_line = || {
+            lines.line(
+                text[before.min(text.len())..]
+                    .find('<')
+                    .map_or(before, |p| before + p),
+            )
         };
         match ev {
             Event::Start(e) => {
-                let el = element(&e, tag_line(e.len() + 2))?;
+                let el = element(&e, tag_line())?;
                 if root.is_some() && stack.is_empty() {
                     return Err(format!(
                         "XML parse error: more than one root element\nLine number={}\n",
@@ -93,7 +104,7 @@ pub fn parse(text: &str) -> Result<Element, String> {
                 stack.push(el);
             }
             Event::Empty(e) => {
-                let el = element(&e, tag_line(e.len() + 3))?;
+                let el = element(&e, tag_line())?;
                 match stack.last_mut() {
                     Some(parent) => parent.children.push(el),
                     None if root.is_none() => root = Some(el),
@@ -130,5 +141,8 @@ pub fn parse(text: &str) -> Result<Element, String> {
             open.name, open.line
         ));
     }
-    root.ok_or_else(|| "XML parse error: empty document\nLine number=0\n".to_string())
+    root.ok_or_else(|| {
+        "XML parse error 13:\nError=XML_ERROR_EMPTY_DOCUMENT ErrorID=13 (0xd) Line number=0\n"
+            .to_string()
+    })
 }
