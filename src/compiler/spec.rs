@@ -266,6 +266,79 @@ impl Default for Actuator {
 
 pub const TRN_UNDEFINED: i32 = 1000;
 
+#[derive(Debug, Clone)]
+pub struct Camera {
+    pub name: String,
+    pub line: Line,
+    /// mjtCamLight value
+    pub mode: i32,
+    pub target: String,
+    pub pos: [f64; 3],
+    pub quat: [f64; 4],
+    pub alt: Alt,
+    pub fovy: f64,
+    pub ipd: f64,
+    pub user: Vec<f64>,
+}
+
+impl Default for Camera {
+    fn default() -> Self {
+        Camera {
+            name: String::new(),
+            line: -1,
+            mode: 0,
+            target: String::new(),
+            pos: [0.0; 3],
+            quat: [1.0, 0.0, 0.0, 0.0],
+            alt: Alt::default(),
+            fovy: 45.0,
+            ipd: 0.068,
+            user: Vec::new(),
+        }
+    }
+}
+
+#[derive(Debug, Clone)]
+pub struct Light {
+    pub name: String,
+    pub line: Line,
+    pub mode: i32,
+    pub target: String,
+    pub directional: bool,
+    pub castshadow: bool,
+    pub active: bool,
+    pub pos: [f64; 3],
+    pub dir: [f64; 3],
+    pub attenuation: [f32; 3],
+    pub cutoff: f32,
+    pub exponent: f32,
+    pub ambient: [f32; 3],
+    pub diffuse: [f32; 3],
+    pub specular: [f32; 3],
+}
+
+impl Default for Light {
+    fn default() -> Self {
+        Light {
+            name: String::new(),
+            line: -1,
+            mode: 0,
+            target: String::new(),
+            directional: false,
+            castshadow: true,
+            active: true,
+            pos: [0.0; 3],
+            dir: [0.0, 0.0, -1.0],
+            attenuation: [1.0, 0.0, 0.0],
+            cutoff: 45.0,
+            exponent: 10.0,
+            ambient: [0.0; 3],
+            diffuse: [0.7; 3],
+            specular: [0.3; 3],
+        }
+    }
+}
+
 /// A default class: the values new elements of each kind start from.
 #[derive(Debug, Clone, Default)]
 pub struct DefaultClass {
@@ -274,6 +347,8 @@ pub struct DefaultClass {
     pub joint: Joint,
     pub geom: Geom,
     pub site: Site,
+    pub camera: Camera,
+    pub light: Light,
     pub actuator: Actuator,
 }
 
@@ -296,6 +371,8 @@ pub struct Body {
     pub joints: Vec<Joint>,
     pub geoms: Vec<Geom>,
     pub sites: Vec<Site>,
+    pub cameras: Vec<Camera>,
+    pub lights: Vec<Light>,
     pub bodies: Vec<Body>,
 }
 
@@ -318,6 +395,8 @@ impl Default for Body {
             joints: Vec::new(),
             geoms: Vec::new(),
             sites: Vec::new(),
+            cameras: Vec::new(),
+            lights: Vec::new(),
             bodies: Vec::new(),
         }
     }

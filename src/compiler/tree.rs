@@ -14,6 +14,8 @@ struct FBody {
     joints: Vec<usize>,
     geoms: Vec<usize>,
     sites: Vec<usize>,
+    cameras: Vec<usize>,
+    lights: Vec<usize>,
     weldid: usize,
     dofnum: usize,
     mocapid: i32,
@@ -54,6 +56,9 @@ pub struct Compiled {
     joints: Vec<FJoint>,
     geoms: Vec<FGeom>,
     sites: Vec<FSite>,
+    /// (camera with target resolved into `mode`-independent id, body)
+    cameras: Vec<(Camera, usize)>,
+    lights: Vec<(Light, usize)>,
     actuators: Vec<Actuator>,
     keys: Vec<Key>,
     trnid: Vec<[i32; 2]>,
@@ -61,6 +66,14 @@ pub struct Compiled {
     settotalmass: f64,
 }
 
+/// Objects of the tree in 2.2.2's list order (bodies depth-first, each body's objects in turn).
+#[derive(Default)]
+struct Lists {
+    cameras: Vec<(Camera, usize)>,
+    lights: Vec<(Light, usize)>,
+}
+
+#[allow(clippy::too_many_arguments)]
 fn flatten(
     b: Body,
     parent: usize,
@@ -69,6 +82,7 @@ fn flatten(
     geoms: &mut Vec<Geom>,
     gbody: &mut Vec<usize>,
     sites: &mut Vec<(Site, usize)>,
+    lists: &mut Lists,
 ) -> usize {
     let id = bodies.len();
     let mut spec = b;
@@ -79,6 +93,8 @@ fn flatten(
         joints: Vec::new(),
         geoms: Vec::new(),
         sites: Vec::new(),
+        cameras: Vec::new(),
+        lights: Vec::new(),
         weldid: 0,
         dofnum: 0,
         mocapid: -1,
@@ -103,9 +119,17 @@ fn flatten(
         fb.sites.push(sites.len());
         sites.push((s, id));
     }
+    for c in std::mem::take(&mut fb.spec.cameras) {
+        fb.cameras.push(lists.cameras.len());
+        lists.cameras.push((c, id));
+    }
+    for l in std::mem::take(&mut fb.spec.lights) {
+        fb.lights.push(lists.lights.len());
+        lists.lights.push((l, id));
+    }
     bodies.push(fb);
     for c in children {
-        let cid = flatten(c, id, bodies, joints, geoms, gbody, sites);
+        let cid = flatten(c, id, bodies, joints, geoms, gbody, sites, lists);
         bodies[id].children.push(cid);
     }
     id
@@ -153,6 +177,7 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
     let mut gspecs = Vec::new();
     let mut gbody = Vec::new();
     let mut sspecs = Vec::new();
+    let mut lists = Lists::default();
     flatten(
         spec.world,
         0,
@@ -161,7 +186,10 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
         &mut gspecs,
         &mut gbody,
         &mut sspecs,
+        &mut lists,
     );
+    let mut cameras = lists.cameras;
+    let mut lights = lists.lights;
     let mut actuators = spec.actuators;
     let mut keys = spec.keys;
     while keys.len() < spec.nkey.max(0) as usize {
@@ -179,6 +207,14 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
     check_names(gspecs.iter().map(|g| (g.name.as_str(), g.line)), "geom")?;
     check_names(sspecs.iter().map(|s| (s.0.name.as_str(), s.0.line)), "site")?;
     check_names(
+        cameras.iter().map(|c| (c.0.name.as_str(), c.0.line)),
+        "camera",
+    )?;
+    check_names(
+        lights.iter().map(|l| (l.0.name.as_str(), l.0.line)),
+        "light",
+    )?;
+    check_names(
         actuators.iter().map(|a| (a.name.as_str(), a.line)),
         "actuator",
     )?;
@@ -190,7 +226,7 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
         user_len(joints.iter().map(|j| j.spec.user.len()), n[1]),
         user_len(gspecs.iter().map(|g| g.user.len()), n[2]),
         user_len(sspecs.iter().map(|s| s.0.user.len()), n[3]),
-        user_len(std::iter::empty(), n[4]),
+        user_len(cameras.iter().map(|c| c.0.user.len()), n[4]),
         user_len(std::iter::empty(), n[5]),
         user_len(actuators.iter().map(|a| a.user.len()), n[6]),
         user_len(std::iter::empty(), n[7]),
@@ -433,6 +469,8 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
     h.njnt = joints.len() as i32;
     h.ngeom = geoms.len() as i32;
     h.nsite = sites.len() as i32;
+    h.ncam = cameras.len() as i32;
+    h.nlight = lights.len() as i32;
     h.nkey = keys.len() as i32;
     h.nq = joints.iter().map(|j| j.spec.kind.nq()).sum::<usize>() as i32;
     h.nv = joints.iter().map(|j| j.spec.kind.nv()).sum::<usize>() as i32;
@@ -450,6 +488,8 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
     nnames += joints.iter().map(|j| j.spec.name.len() + 1).sum::<usize>();
     nnames += geoms.iter().map(|g| g.spec.name.len() + 1).sum::<usize>();
     nnames += sites.iter().map(|s| s.spec.name.len() + 1).sum::<usize>();
+    nnames += cameras.iter().map(|c| c.0.name.len() + 1).sum::<usize>();
+    nnames += lights.iter().map(|l| l.0.name.len() + 1).sum::<usize>();
     nnames += actuators.iter().map(|a| a.name.len() + 1).sum::<usize>();
     nnames += keys.iter().map(|k| k.name.len() + 1).sum::<usize>();
     h.nnames = nnames as i32;
@@ -586,12 +626,92 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
         joints,
         geoms,
         sites,
+        cameras,
+        lights,
         actuators,
         keys,
         trnid,
         nuser,
         settotalmass: opts.settotalmass,
     })
+}
+
+fn find_body(bodies: &[FBody], name: &str) -> Option<usize> {
+    bodies.iter().position(|b| b.spec.name == name)
+}
+
+fn compile_camera(
+    c: &mut Camera,
+    id: usize,
+    body: usize,
+    bodies: &[FBody],
+    nuser: usize,
+    s: &Settings,
+) -> Result<(), CError> {
+    let name = c.name.clone();
+    let err = |m: String| CError::at(m, &name, id, c.line);
+    if c.user.len() > nuser {
+        return Err(err(format!(
+            "user has more values than nuser_cam in camera '{name}' (id = {id})"
+        )));
+    }
+    let alt = c.alt;
+    alt_set(&alt, &mut c.quat, None, s).map_err(|e| {
+        err(format!(
+            "alternative specification error '{e}' in site {id}"
+        ))
+    })?;
+    normalize(&mut c.quat);
+    c.user.resize(nuser, 0.0);
+    target_id(&c.target, "camera", &name, id, c.line, body, bodies).map(|_| ())
+}
+
+/// Body id named by a camera/light `target` (-1 when none).
+fn target_id(
+    target: &str,
+    what: &str,
+    name: &str,
+    id: usize,
+    line: i32,
+    body: usize,
+    bodies: &[FBody],
+) -> Result<i32, CError> {
+    let mut tid = -1;
+    if !target.is_empty() {
+        match find_body(bodies, target) {
+            Some(b) => tid = b as i32,
+            None => {
+                return Err(CError::at(
+                    format!("unknown target body in {what} '{name}' (id = {id})"),
+                    name,
+                    id,
+                    line,
+                ))
+            }
+        }
+    }
+    if tid == body as i32 {
+        return Err(CError::at(
+            format!("parent-targeting in {what} '{name}' (id = {id})"),
+            name,
+            id,
+            line,
+        ));
+    }
+    Ok(tid)
+}
+
+fn compile_light(l: &mut Light, id: usize, body: usize, bodies: &[FBody]) -> Result<(), CError> {
+    let nrm2: f64 = l.dir.iter().map(|x| x * x).sum();
+    if normalize(&mut l.dir) < MINVAL || nrm2 < EPS {
+        return Err(CError::at(
+            format!("zero direction in light '{}' (id = {id})", l.name),
+            &l.name,
+            id,
+            l.line,
+        ));
+    }
+    target_id(&l.target, "light", &l.name, id, l.line, body, bodies).map(|_| ())
 }
 
 fn put<T: Copy>(dst: &mut [T], i: usize, src: &[T]) {
@@ -645,6 +765,12 @@ impl Compiled {
         }
         for (i, s) in self.sites.iter().enumerate() {
             name(&mut m.name_siteadr[i], &s.spec.name, m.names);
+        }
+        for (i, c) in self.cameras.iter().enumerate() {
+            name(&mut m.name_camadr[i], &c.0.name, m.names);
+        }
+        for (i, l) in self.lights.iter().enumerate() {
+            name(&mut m.name_lightadr[i], &l.0.name, m.names);
         }
         for (i, a) in self.actuators.iter().enumerate() {
             name(&mut m.name_actuatoradr[i], &a.name, m.names);
@@ -820,6 +946,39 @@ impl Compiled {
                     0
                 };
             }
+        }
+        let target = |t: &str| {
+            if t.is_empty() {
+                -1
+            } else {
+                find_body(&self.bodies, t).map_or(-1, |b| b as i32)
+            }
+        };
+        for (i, (c, b)) in self.cameras.iter().enumerate() {
+            m.cam_bodyid[i] = *b as i32;
+            m.cam_mode[i] = c.mode;
+            m.cam_targetbodyid[i] = target(&c.target);
+            put(m.cam_pos, i, &c.pos);
+            put(m.cam_quat, i, &c.quat);
+            m.cam_fovy[i] = c.fovy;
+            m.cam_ipd[i] = c.ipd;
+            put(m.cam_user, i, &c.user);
+        }
+        for (i, (l, b)) in self.lights.iter().enumerate() {
+            m.light_bodyid[i] = *b as i32;
+            m.light_mode[i] = l.mode;
+            m.light_targetbodyid[i] = target(&l.target);
+            m.light_directional[i] = l.directional as u8;
+            m.light_castshadow[i] = l.castshadow as u8;
+            m.light_active[i] = l.active as u8;
+            put(m.light_pos, i, &l.pos);
+            put(m.light_dir, i, &l.dir);
+            put(m.light_attenuation, i, &l.attenuation);
+            m.light_cutoff[i] = l.cutoff;
+            m.light_exponent[i] = l.exponent;
+            put(m.light_ambient, i, &l.ambient);
+            put(m.light_diffuse, i, &l.diffuse);
+            put(m.light_specular, i, &l.specular);
         }
         let nv = h.nv as usize;
         let mut nm = 0;

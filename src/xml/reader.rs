@@ -274,6 +274,67 @@ fn one_site(el: &Element, s: &mut Site) -> R<()> {
     Ok(())
 }
 
+const CAMLIGHT_MODES: [&str; 5] = ["fixed", "track", "trackcom", "targetbody", "targetbodycom"];
+
+fn one_camera(el: &Element, c: &mut Camera) -> R<()> {
+    text(el, "name", &mut c.name);
+    text(el, "target", &mut c.target);
+    if let Some(i) = keyword(el, "mode", &CAMLIGHT_MODES)? {
+        c.mode = i as i32;
+    }
+    nums(el, "pos", &mut c.pos)?;
+    nums(el, "quat", &mut c.quat)?;
+    alternative(el, &mut c.alt)?;
+    num(el, "fovy", &mut c.fovy)?;
+    num(el, "ipd", &mut c.ipd)?;
+    user(el, &mut c.user)?;
+    c.line = el.line;
+    Ok(())
+}
+
+fn floats<const N: usize>(el: &Element, name: &str, out: &mut [f32; N]) -> R<bool> {
+    Ok(read_nums(el, name, out, false, true)? > 0)
+}
+
+fn one_light(el: &Element, l: &mut Light) -> R<()> {
+    text(el, "name", &mut l.name);
+    text(el, "target", &mut l.target);
+    if let Some(i) = keyword(el, "mode", &CAMLIGHT_MODES)? {
+        l.mode = i as i32;
+    }
+    for (name, out) in [
+        ("directional", &mut l.directional),
+        ("castshadow", &mut l.castshadow),
+        ("active", &mut l.active),
+    ] {
+        if let Some(b) = boolean(el, name)? {
+            *out = b;
+        }
+    }
+    nums(el, "pos", &mut l.pos)?;
+    nums(el, "dir", &mut l.dir)?;
+    floats(el, "attenuation", &mut l.attenuation)?;
+    read_nums(
+        el,
+        "cutoff",
+        std::slice::from_mut(&mut l.cutoff),
+        false,
+        true,
+    )?;
+    read_nums(
+        el,
+        "exponent",
+        std::slice::from_mut(&mut l.exponent),
+        false,
+        true,
+    )?;
+    floats(el, "ambient", &mut l.ambient)?;
+    floats(el, "diffuse", &mut l.diffuse)?;
+    floats(el, "specular", &mut l.specular)?;
+    l.line = el.line;
+    Ok(())
+}
+
 const ACTUATORS: [&str; 4] = ["general", "motor", "position", "velocity"];
 
 fn one_actuator(el: &Element, a: &mut Actuator) -> R<()> {
@@ -408,6 +469,8 @@ fn read_default(spec: &mut ModelSpec, el: &Element, parent: Option<usize>) -> R<
             "joint" => one_joint(c, &mut d.joint)?,
             "geom" => one_geom(c, &mut d.geom)?,
             "site" => one_site(c, &mut d.site)?,
+            "camera" => one_camera(c, &mut d.camera)?,
+            "light" => one_light(c, &mut d.light)?,
             n if ACTUATORS.contains(&n) => one_actuator(c, &mut d.actuator)?,
             "default" => {}
             other => return Err(unsupported(c, other)),
@@ -467,6 +530,16 @@ fn read_body(spec: &ModelSpec, el: &Element, body: &mut Body, def: usize, world:
                 let mut s = spec.defaults[cdef].site.clone();
                 one_site(c, &mut s)?;
                 body.sites.push(s);
+            }
+            "camera" => {
+                let mut cam = spec.defaults[cdef].camera.clone();
+                one_camera(c, &mut cam)?;
+                body.cameras.push(cam);
+            }
+            "light" => {
+                let mut light = spec.defaults[cdef].light.clone();
+                one_light(c, &mut light)?;
+                body.lights.push(light);
             }
             "body" => {
                 let mut childdef = def;
@@ -658,6 +731,122 @@ fn read_size(spec: &mut ModelSpec, el: &Element) -> R<()> {
     Ok(())
 }
 
+fn f1(el: &Element, name: &str, out: &mut f32) -> R<()> {
+    read_nums(el, name, std::slice::from_mut(out), false, true).map(|_| ())
+}
+
+fn read_visual(spec: &mut ModelSpec, el: &Element) -> R<()> {
+    let v = &mut spec.visual;
+    for c in &el.children {
+        match c.name.as_str() {
+            "global" => {
+                let g = &mut v.global;
+                for (n, out) in [
+                    ("fovy", &mut g.fovy),
+                    ("ipd", &mut g.ipd),
+                    ("azimuth", &mut g.azimuth),
+                    ("elevation", &mut g.elevation),
+                    ("linewidth", &mut g.linewidth),
+                    ("glow", &mut g.glow),
+                ] {
+                    f1(c, n, out)?;
+                }
+                int(c, "offwidth", &mut g.offwidth)?;
+                int(c, "offheight", &mut g.offheight)?;
+            }
+            "quality" => {
+                let q = &mut v.quality;
+                int(c, "shadowsize", &mut q.shadowsize)?;
+                int(c, "offsamples", &mut q.offsamples)?;
+                int(c, "numslices", &mut q.numslices)?;
+                int(c, "numstacks", &mut q.numstacks)?;
+                int(c, "numquads", &mut q.numquads)?;
+            }
+            "headlight" => {
+                let h = &mut v.headlight;
+                floats(c, "ambient", &mut h.ambient)?;
+                floats(c, "diffuse", &mut h.diffuse)?;
+                floats(c, "specular", &mut h.specular)?;
+                int(c, "active", &mut h.active)?;
+            }
+            "map" => {
+                let m = &mut v.map;
+                for (n, out) in [
+                    ("stiffness", &mut m.stiffness),
+                    ("stiffnessrot", &mut m.stiffnessrot),
+                    ("force", &mut m.force),
+                    ("torque", &mut m.torque),
+                    ("alpha", &mut m.alpha),
+                    ("fogstart", &mut m.fogstart),
+                    ("fogend", &mut m.fogend),
+                    ("znear", &mut m.znear),
+                    ("zfar", &mut m.zfar),
+                    ("haze", &mut m.haze),
+                    ("shadowclip", &mut m.shadowclip),
+                    ("shadowscale", &mut m.shadowscale),
+                    ("actuatortendon", &mut m.actuatortendon),
+                ] {
+                    f1(c, n, out)?;
+                }
+            }
+            "scale" => {
+                let m = &mut v.scale;
+                for (n, out) in [
+                    ("forcewidth", &mut m.forcewidth),
+                    ("contactwidth", &mut m.contactwidth),
+                    ("contactheight", &mut m.contactheight),
+                    ("connect", &mut m.connect),
+                    ("com", &mut m.com),
+                    ("camera", &mut m.camera),
+                    ("light", &mut m.light),
+                    ("selectpoint", &mut m.selectpoint),
+                    ("jointlength", &mut m.jointlength),
+                    ("jointwidth", &mut m.jointwidth),
+                    ("actuatorlength", &mut m.actuatorlength),
+                    ("actuatorwidth", &mut m.actuatorwidth),
+                    ("framelength", &mut m.framelength),
+                    ("framewidth", &mut m.framewidth),
+                    ("constraint", &mut m.constraint),
+                    ("slidercrank", &mut m.slidercrank),
+                ] {
+                    f1(c, n, out)?;
+                }
+            }
+            "rgba" => {
+                let r = &mut v.rgba;
+                for (n, out) in [
+                    ("fog", &mut r.fog),
+                    ("haze", &mut r.haze),
+                    ("force", &mut r.force),
+                    ("inertia", &mut r.inertia),
+                    ("joint", &mut r.joint),
+                    ("actuator", &mut r.actuator),
+                    ("actuatornegative", &mut r.actuatornegative),
+                    ("actuatorpositive", &mut r.actuatorpositive),
+                    ("com", &mut r.com),
+                    ("camera", &mut r.camera),
+                    ("light", &mut r.light),
+                    ("selectpoint", &mut r.selectpoint),
+                    ("connect", &mut r.connect),
+                    ("contactpoint", &mut r.contactpoint),
+                    ("contactforce", &mut r.contactforce),
+                    ("contactfriction", &mut r.contactfriction),
+                    ("contacttorque", &mut r.contacttorque),
+                    ("contactgap", &mut r.contactgap),
+                    ("rangefinder", &mut r.rangefinder),
+                    ("constraint", &mut r.constraint),
+                    ("slidercrank", &mut r.slidercrank),
+                    ("crankbroken", &mut r.crankbroken),
+                ] {
+                    floats(c, n, out)?;
+                }
+            }
+            _ => {}
+        }
+    }
+    Ok(())
+}
+
 fn read_statistic(spec: &mut ModelSpec, el: &Element) -> R<()> {
     for (i, n) in ["meaninertia", "meanmass", "meansize", "extent"]
         .iter()
@@ -707,6 +896,9 @@ pub fn read(root: &Element) -> R<ModelSpec> {
     }
     for s in sections("size") {
         read_size(&mut spec, s)?;
+    }
+    for s in sections("visual") {
+        read_visual(&mut spec, s)?;
     }
     for s in sections("statistic") {
         read_statistic(&mut spec, s)?;
