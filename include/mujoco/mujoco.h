@@ -60,6 +60,42 @@ void *mju_malloc(size_t size);
 
 void mju_free(void *ptr);
 
+int mj_version(void);
+
+const char *mj_versionString(void);
+
+void mj_defaultLROpt(mjLROpt *opt);
+
+void mj_defaultSolRefImp(mjtNum *solref, mjtNum *solimp);
+
+void mj_defaultOption(mjOption *opt);
+
+void mj_defaultVisual(mjVisual *vis);
+
+mjModel *mj_copyModel(mjModel *dest, const mjModel *src);
+
+void mj_deleteModel(mjModel *m);
+
+int mj_sizeModel(const mjModel *m);
+
+mjData *mj_makeData(const mjModel *m);
+
+mjData *mj_copyData(mjData *dest, const mjModel *m, const mjData *src);
+
+void mj_resetData(const mjModel *m, mjData *d);
+
+void mj_resetDataDebug(const mjModel *m, mjData *d, unsigned char debug_value);
+
+void mj_resetDataKeyframe(const mjModel *m, mjData *d, int key);
+
+void mj_deleteData(mjData *d);
+
+mjtNum *mj_stackAlloc(mjData *d, int size);
+
+void mj_saveModel(const mjModel *m, const char *filename, void *buffer, int buffer_sz);
+
+mjModel *mj_loadModel(const char *filename, const mjVFS *vfs);
+
 void mj_defaultVFS(mjVFS *vfs);
 
 int mj_addFileVFS(mjVFS *vfs, const char *directory, const char *filename);
@@ -93,38 +129,6 @@ void mj_inverse(const mjModel *m, mjData *d);
 void mj_forwardSkip(const mjModel *m, mjData *d, int skipstage, int skipsensor);
 
 void mj_inverseSkip(const mjModel *m, mjData *d, int skipstage, int skipsensor);
-
-void mj_defaultLROpt(mjLROpt *opt);
-
-void mj_defaultSolRefImp(mjtNum *solref, mjtNum *solimp);
-
-void mj_defaultOption(mjOption *opt);
-
-void mj_defaultVisual(mjVisual *vis);
-
-mjModel *mj_copyModel(mjModel *dest, const mjModel *src);
-
-void mj_saveModel(const mjModel *m, const char *filename, void *buffer, int buffer_sz);
-
-mjModel *mj_loadModel(const char *filename, const mjVFS *vfs);
-
-void mj_deleteModel(mjModel *m);
-
-int mj_sizeModel(const mjModel *m);
-
-mjData *mj_makeData(const mjModel *m);
-
-mjData *mj_copyData(mjData *dest, const mjModel *m, const mjData *src);
-
-void mj_resetData(const mjModel *m, mjData *d);
-
-void mj_resetDataDebug(const mjModel *m, mjData *d, unsigned char debug_value);
-
-void mj_resetDataKeyframe(const mjModel *m, mjData *d, int key);
-
-mjtNum *mj_stackAlloc(mjData *d, int size);
-
-void mj_deleteData(mjData *d);
 
 void mj_resetCallbacks(void);
 
@@ -330,10 +334,6 @@ void mj_local2Global(mjData *d,
 mjtNum mj_getTotalmass(const mjModel *m);
 
 void mj_setTotalmass(mjModel *m, mjtNum newmass);
-
-int mj_version(void);
-
-const char *mj_versionString(void);
 
 mjtNum mj_ray(const mjModel *m,
               const mjData *d,

@@ -416,3 +416,33 @@ pub fn default_visual() -> mjVisual {
         },
     }
 }
+
+/// Byte offset and length of each array within a buffer laid out from `rows`.
+fn spans(rows: &[(&'static str, usize, usize)]) -> Vec<(&'static str, usize, usize)> {
+    let mut off = 0;
+    rows.iter()
+        .map(|&(name, elem, count)| {
+            off += pad(off);
+            let span = (name, off, elem * count);
+            off += elem * count;
+            span
+        })
+        .collect()
+}
+
+/// Every mjModel array as (name, byte offset in `m.buffer`, byte length), in X-macro order.
+pub fn model_spans(m: &mjModel) -> Vec<(&'static str, usize, usize)> {
+    spans(&model_rows(m))
+}
+
+/// Every mjData array as (name, byte offset in `d.buffer`, byte length), in X-macro order.
+pub fn data_spans(m: &mjModel) -> Vec<(&'static str, usize, usize)> {
+    spans(&data_rows(m))
+}
+
+/// Number of int fields and of arrays of mjModel: the MJB header's counts.
+pub fn model_counts() -> (usize, usize) {
+    // SAFETY: all-zero bits are a valid mjModel.
+    let zero: mjModel = unsafe { std::mem::zeroed() };
+    (model_ints(&zero).len(), model_rows(&zero).len())
+}

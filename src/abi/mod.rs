@@ -26,6 +26,7 @@ macro_rules! row_len {
 }
 
 pub mod alloc;
+pub mod mjb;
 pub mod mjdata;
 pub mod mjmodel;
 pub mod mjtnum;

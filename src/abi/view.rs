@@ -5,7 +5,6 @@
 //! lists give, which `mj_makeModel`/`mj_makeData` guarantee.
 
 use super::*;
-use std::os::raw::c_char;
 
 unsafe fn view<'a, T>(ptr: *const T, len: usize) -> &'a [T] {
     if len == 0 || ptr.is_null() {
