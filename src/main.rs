@@ -3,13 +3,20 @@
 
 use mujoco::abi::*;
 use mujoco::capi::errmem::{mju_user_error, mju_user_warning};
-use mujoco::capi::io::{mj_deleteData, mj_deleteModel, mj_loadModel, mj_makeData, mj_resetDataKeyframe};
+use mujoco::capi::io::{
+    mj_deleteData, mj_deleteModel, mj_loadModel, mj_makeData, mj_resetDataKeyframe,
+};
 use std::ffi::{CStr, CString};
 use std::os::raw::{c_char, c_int};
 use std::time::Instant;
 
 extern "C" {
-    fn mj_loadXML(filename: *const c_char, vfs: *const mjVFS, error: *mut c_char, error_sz: c_int) -> *mut mjModel;
+    fn mj_loadXML(
+        filename: *const c_char,
+        vfs: *const mjVFS,
+        error: *mut c_char,
+        error_sz: c_int,
+    ) -> *mut mjModel;
     fn mj_step(m: *const mjModel, d: *mut mjData);
 }
 
@@ -32,12 +39,19 @@ fn load(path: &str) -> Result<*mut mjModel, String> {
         if path.ends_with(".mjb") {
             mj_loadModel(cpath.as_ptr(), std::ptr::null())
         } else {
-            mj_loadXML(cpath.as_ptr(), std::ptr::null(), err.as_mut_ptr(), err.len() as c_int)
+            mj_loadXML(
+                cpath.as_ptr(),
+                std::ptr::null(),
+                err.as_mut_ptr(),
+                err.len() as c_int,
+            )
         }
     };
     if m.is_null() {
         // SAFETY: the loader NUL-terminates its message.
-        let msg = unsafe { CStr::from_ptr(err.as_ptr()) }.to_string_lossy().into_owned();
+        let msg = unsafe { CStr::from_ptr(err.as_ptr()) }
+            .to_string_lossy()
+            .into_owned();
         return Err(format!("could not load {path}: {msg}"));
     }
     Ok(m)
@@ -81,17 +95,30 @@ fn main() {
             "sizes      nq={} nv={} nu={} na={} nbody={} njnt={} ngeom={} nsite={}",
             mm.nq, mm.nv, mm.nu, mm.na, mm.nbody, mm.njnt, mm.ngeom, mm.nsite
         );
-        println!("timestep   {} s, integrator {}", mm.opt.timestep, ["Euler", "RK4", "implicit"][mm.opt.integrator.clamp(0, 2) as usize]);
+        println!(
+            "timestep   {} s, integrator {}",
+            mm.opt.timestep,
+            ["Euler", "RK4", "implicit"][mm.opt.integrator.clamp(0, 2) as usize]
+        );
         let start = Instant::now();
         for _ in 0..steps {
             mj_step(m, d);
         }
         let secs = start.elapsed().as_secs_f64();
         let dd = &*d;
-        println!("simulated  {steps} steps, {:.3} s of model time in {:.3} s wall", dd.time, secs);
-        println!("speed      {:.0} steps/s ({:.1}x real time)", steps as f64 / secs, dd.time / secs);
+        println!(
+            "simulated  {steps} steps, {:.3} s of model time in {:.3} s wall",
+            dd.time, secs
+        );
+        println!(
+            "speed      {:.0} steps/s ({:.1}x real time)",
+            steps as f64 / secs,
+            dd.time / secs
+        );
         let show = |label: &str, p: *const f64, n: i32| {
-            let v: Vec<String> = (0..n.max(0) as usize).map(|i| format!("{:.6}", *p.add(i))).collect();
+            let v: Vec<String> = (0..n.max(0) as usize)
+                .map(|i| format!("{:.6}", *p.add(i)))
+                .collect();
             println!("{label:<10} [{}]", v.join(", "));
         };
         show("qpos", dd.qpos, mm.nq);

@@ -14,7 +14,12 @@ fn bytes_of<T>(v: &T) -> &[u8] {
 
 fn header() -> [i32; 4] {
     let (nint, nptr) = model_counts();
-    [ID, std::mem::size_of::<mjtNum>() as i32, nint as i32, nptr as i32]
+    [
+        ID,
+        std::mem::size_of::<mjtNum>() as i32,
+        nint as i32,
+        nptr as i32,
+    ]
 }
 
 /// Serializes a model.
@@ -77,7 +82,9 @@ pub fn load(data: &[u8]) -> Result<*mut mjModel, String> {
             return Err(msgs[i].into());
         }
     }
-    let ints = r.take(nint * 4, "Model file does not contain enough ints")?.to_vec();
+    let ints = r
+        .take(nint * 4, "Model file does not contain enough ints")?
+        .to_vec();
     // SAFETY: all-zero bits are a valid mjModel; only the int prefix is filled.
     let mut sizes: mjModel = unsafe { std::mem::zeroed() };
     fill(&mut sizes, &ints);
@@ -90,16 +97,32 @@ pub fn load(data: &[u8]) -> Result<*mut mjModel, String> {
             return Err("Corrupted model, wrong size parameters".into());
         }
         let result = (|| -> Result<(), String> {
-            fill(&mut mm.opt, r.take(std::mem::size_of::<mjOption>(), "Model file does not have a complete mjOption")?);
-            fill(&mut mm.vis, r.take(std::mem::size_of::<mjVisual>(), "Model file does not have a complete mjVisual")?);
+            fill(
+                &mut mm.opt,
+                r.take(
+                    std::mem::size_of::<mjOption>(),
+                    "Model file does not have a complete mjOption",
+                )?,
+            );
+            fill(
+                &mut mm.vis,
+                r.take(
+                    std::mem::size_of::<mjVisual>(),
+                    "Model file does not have a complete mjVisual",
+                )?,
+            );
             fill(
                 &mut mm.stat,
-                r.take(std::mem::size_of::<mjStatistic>(), "Model file does not have a complete mjStatistic")?,
+                r.take(
+                    std::mem::size_of::<mjStatistic>(),
+                    "Model file does not have a complete mjStatistic",
+                )?,
             );
             let buf = std::slice::from_raw_parts_mut(mm.buffer as *mut u8, mm.nbuffer as usize);
             for (_, off, len) in model_spans(mm) {
-                buf[off..off + len]
-                    .copy_from_slice(r.take(len, "Model file does not contain a large enough buffer")?);
+                buf[off..off + len].copy_from_slice(
+                    r.take(len, "Model file does not contain a large enough buffer")?,
+                );
             }
             if r.pos != data.len() {
                 return Err("Model file is too large".into());

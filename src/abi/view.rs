@@ -111,7 +111,11 @@ pub struct Arena<'a> {
 impl<'a> Arena<'a> {
     /// An arena over caller-owned memory (tests, compiler scratch).
     pub fn over(buf: &'a mut [f64]) -> Self {
-        Arena { free: buf, used: 0, peak: 0 }
+        Arena {
+            free: buf,
+            used: 0,
+            peak: 0,
+        }
     }
 
     /// `n` zeroed mjtNums, or an error like 2.2.2's "Stack overflow".
@@ -137,7 +141,11 @@ impl<'a> Arena<'a> {
 
     /// Runs `f` with a nested arena; everything it allocates is released afterwards.
     pub fn scope<R>(&mut self, f: impl FnOnce(&mut Arena<'_>) -> R) -> R {
-        let mut inner = Arena { free: &mut *self.free, used: self.used, peak: self.used };
+        let mut inner = Arena {
+            free: &mut *self.free,
+            used: self.used,
+            peak: self.used,
+        };
         let r = f(&mut inner);
         self.peak = self.peak.max(inner.peak);
         r

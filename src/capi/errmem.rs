@@ -49,7 +49,11 @@ pub extern "C" fn _mjPRIVATE__set_xml_precision(p: c_int) {
 
 /// Appends a dated entry to MUJOCO_LOG.TXT in the working directory, as 2.2.2 does.
 pub fn write_log(kind: &str, msg: &str) {
-    if let Ok(mut f) = std::fs::OpenOptions::new().create(true).append(true).open("MUJOCO_LOG.TXT") {
+    if let Ok(mut f) = std::fs::OpenOptions::new()
+        .create(true)
+        .append(true)
+        .open("MUJOCO_LOG.TXT")
+    {
         let _ = write!(f, "{}{}: {}\n\n", asctime_now(), kind, msg);
     }
 }
@@ -207,17 +211,17 @@ pub fn malloc(size: usize) -> *mut c_void {
 }
 
 /// Frees memory from `malloc`, through the user deallocator when set.
-pub fn free(ptr: *mut c_void) {
+///
+/// # Safety
+/// `ptr` is NULL or came from `malloc` and was not freed.
+pub unsafe fn free(ptr: *mut c_void) {
     if ptr.is_null() {
         return;
     }
-    // SAFETY: ptr came from `malloc` (the caller's contract, as in C).
-    unsafe {
-        if let Some(f) = mju_user_free {
-            f(ptr)
-        } else {
-            libc::free(ptr)
-        }
+    if let Some(f) = mju_user_free {
+        f(ptr)
+    } else {
+        libc::free(ptr)
     }
 }
 
@@ -226,6 +230,6 @@ pub extern "C" fn mju_malloc(size: usize) -> *mut c_void {
     malloc(size)
 }
 #[no_mangle]
-pub extern "C" fn mju_free(ptr: *mut c_void) {
+pub unsafe extern "C" fn mju_free(ptr: *mut c_void) {
     free(ptr)
 }

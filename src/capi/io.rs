@@ -53,7 +53,9 @@ pub unsafe extern "C" fn mj_copyModel(dest: *mut mjModel, src: *const mjModel) -
         error("mj_copyModel: NULL source model");
         return std::ptr::null_mut();
     };
-    guard("mj_copyModel", std::ptr::null_mut(), || alloc::copy_model(dest, src).map_err(EngineError))
+    guard("mj_copyModel", std::ptr::null_mut(), || {
+        alloc::copy_model(dest, src).map_err(EngineError)
+    })
 }
 
 #[no_mangle]
@@ -86,12 +88,18 @@ pub unsafe extern "C" fn mj_makeData(m: *const mjModel) -> *mut mjData {
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_copyData(dest: *mut mjData, m: *const mjModel, src: *const mjData) -> *mut mjData {
+pub unsafe extern "C" fn mj_copyData(
+    dest: *mut mjData,
+    m: *const mjModel,
+    src: *const mjData,
+) -> *mut mjData {
     let (Some(m), Some(src)) = (m.as_ref(), src.as_ref()) else {
         error("mj_copyData: NULL argument");
         return std::ptr::null_mut();
     };
-    guard("mj_copyData", std::ptr::null_mut(), || alloc::copy_data(dest, m, src).map_err(EngineError))
+    guard("mj_copyData", std::ptr::null_mut(), || {
+        alloc::copy_data(dest, m, src).map_err(EngineError)
+    })
 }
 
 #[no_mangle]
@@ -102,7 +110,11 @@ pub unsafe extern "C" fn mj_resetData(m: *const mjModel, d: *mut mjData) {
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_resetDataDebug(m: *const mjModel, d: *mut mjData, debug_value: c_uchar) {
+pub unsafe extern "C" fn mj_resetDataDebug(
+    m: *const mjModel,
+    d: *mut mjData,
+    debug_value: c_uchar,
+) {
     if let (Some(m), Some(d)) = (m.as_ref(), d.as_mut()) {
         alloc::reset_data(m, d, debug_value);
     }
@@ -144,14 +156,23 @@ pub unsafe fn read_file(filename: &str, vfs: *const mjVFS) -> Option<Vec<u8>> {
         if let Some(i) = vfs_find(vfs, filename) {
             let n = vfs.filesize[i].max(0) as usize;
             let p = vfs.filedata[i] as *const u8;
-            return Some(if p.is_null() { Vec::new() } else { std::slice::from_raw_parts(p, n).to_vec() });
+            return Some(if p.is_null() {
+                Vec::new()
+            } else {
+                std::slice::from_raw_parts(p, n).to_vec()
+            });
         }
     }
     std::fs::read(filename).ok()
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_saveModel(m: *const mjModel, filename: *const c_char, buffer: *mut c_void, buffer_sz: c_int) {
+pub unsafe extern "C" fn mj_saveModel(
+    m: *const mjModel,
+    filename: *const c_char,
+    buffer: *mut c_void,
+    buffer_sz: c_int,
+) {
     let Some(m) = m.as_ref() else {
         return;
     };
@@ -250,7 +271,11 @@ pub unsafe extern "C" fn mj_defaultVFS(vfs: *mut mjVFS) {
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_addFileVFS(vfs: *mut mjVFS, directory: *const c_char, filename: *const c_char) -> c_int {
+pub unsafe extern "C" fn mj_addFileVFS(
+    vfs: *mut mjVFS,
+    directory: *const c_char,
+    filename: *const c_char,
+) -> c_int {
     let Some(vfs) = vfs.as_mut() else {
         return -1;
     };
@@ -269,7 +294,11 @@ pub unsafe extern "C" fn mj_addFileVFS(vfs: *mut mjVFS, directory: *const c_char
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_makeEmptyFileVFS(vfs: *mut mjVFS, filename: *const c_char, filesize: c_int) -> c_int {
+pub unsafe extern "C" fn mj_makeEmptyFileVFS(
+    vfs: *mut mjVFS,
+    filename: *const c_char,
+    filesize: c_int,
+) -> c_int {
     let Some(vfs) = vfs.as_mut() else {
         return -1;
     };
