@@ -8,23 +8,13 @@ use std::os::raw::{c_char, c_int, c_void};
 use super::pending;
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_loadXML(
-    filename: *const c_char,
-    vfs: *const mjVFS,
-    error: *mut c_char,
-    error_sz: c_int,
-) -> *mut mjModel {
+pub unsafe extern "C" fn mj_loadXML(filename: *const c_char, vfs: *const mjVFS, error: *mut c_char, error_sz: c_int) -> *mut mjModel {
     pending("mj_loadXML");
     std::ptr::null_mut()
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_saveLastXML(
-    filename: *const c_char,
-    m: *const mjModel,
-    error: *mut c_char,
-    error_sz: c_int,
-) -> c_int {
+pub unsafe extern "C" fn mj_saveLastXML(filename: *const c_char, m: *const mjModel, error: *mut c_char, error_sz: c_int) -> c_int {
     pending("mj_saveLastXML");
     0 as c_int
 }
@@ -35,13 +25,7 @@ pub unsafe extern "C" fn mj_freeLastXML() {
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_printSchema(
-    filename: *const c_char,
-    buffer: *mut c_char,
-    buffer_sz: c_int,
-    flg_html: c_int,
-    flg_pad: c_int,
-) -> c_int {
+pub unsafe extern "C" fn mj_printSchema(filename: *const c_char, buffer: *mut c_char, buffer_sz: c_int, flg_html: c_int, flg_pad: c_int) -> c_int {
     pending("mj_printSchema");
     0 as c_int
 }
@@ -72,22 +56,12 @@ pub unsafe extern "C" fn mj_inverse(m: *const mjModel, d: *mut mjData) {
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_forwardSkip(
-    m: *const mjModel,
-    d: *mut mjData,
-    skipstage: c_int,
-    skipsensor: c_int,
-) {
+pub unsafe extern "C" fn mj_forwardSkip(m: *const mjModel, d: *mut mjData, skipstage: c_int, skipsensor: c_int) {
     pending("mj_forwardSkip");
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_inverseSkip(
-    m: *const mjModel,
-    d: *mut mjData,
-    skipstage: c_int,
-    skipsensor: c_int,
-) {
+pub unsafe extern "C" fn mj_inverseSkip(m: *const mjModel, d: *mut mjData, skipstage: c_int, skipsensor: c_int) {
     pending("mj_inverseSkip");
 }
 
@@ -102,24 +76,13 @@ pub unsafe extern "C" fn mj_setConst(m: *mut mjModel, d: *mut mjData) {
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_setLengthRange(
-    m: *mut mjModel,
-    d: *mut mjData,
-    index: c_int,
-    opt: *const mjLROpt,
-    error: *mut c_char,
-    error_sz: c_int,
-) -> c_int {
+pub unsafe extern "C" fn mj_setLengthRange(m: *mut mjModel, d: *mut mjData, index: c_int, opt: *const mjLROpt, error: *mut c_char, error_sz: c_int) -> c_int {
     pending("mj_setLengthRange");
     0 as c_int
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_printFormattedModel(
-    m: *const mjModel,
-    filename: *const c_char,
-    float_format: *const c_char,
-) {
+pub unsafe extern "C" fn mj_printFormattedModel(m: *const mjModel, filename: *const c_char, float_format: *const c_char) {
     pending("mj_printFormattedModel");
 }
 
@@ -129,12 +92,7 @@ pub unsafe extern "C" fn mj_printModel(m: *const mjModel, filename: *const c_cha
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_printFormattedData(
-    m: *const mjModel,
-    d: *mut mjData,
-    filename: *const c_char,
-    float_format: *const c_char,
-) {
+pub unsafe extern "C" fn mj_printFormattedData(m: *const mjModel, d: *mut mjData, filename: *const c_char, float_format: *const c_char) {
     pending("mj_printFormattedData");
 }
 
@@ -149,13 +107,7 @@ pub unsafe extern "C" fn mju_printMat(mat: *const mjtNum, nr: c_int, nc: c_int) 
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mju_printMatSparse(
-    mat: *const mjtNum,
-    nr: c_int,
-    rownnz: *const c_int,
-    rowadr: *const c_int,
-    colind: *const c_int,
-) {
+pub unsafe extern "C" fn mju_printMatSparse(mat: *const mjtNum, nr: c_int, rownnz: *const c_int, rowadr: *const c_int, colind: *const c_int) {
     pending("mju_printMatSparse");
 }
 
@@ -290,24 +242,12 @@ pub unsafe extern "C" fn mj_factorM(m: *const mjModel, d: *mut mjData) {
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_solveM(
-    m: *const mjModel,
-    d: *mut mjData,
-    x: *mut mjtNum,
-    y: *const mjtNum,
-    n: c_int,
-) {
+pub unsafe extern "C" fn mj_solveM(m: *const mjModel, d: *mut mjData, x: *mut mjtNum, y: *const mjtNum, n: c_int) {
     pending("mj_solveM");
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_solveM2(
-    m: *const mjModel,
-    d: *mut mjData,
-    x: *mut mjtNum,
-    y: *const mjtNum,
-    n: c_int,
-) {
+pub unsafe extern "C" fn mj_solveM2(m: *const mjModel, d: *mut mjData, x: *mut mjtNum, y: *const mjtNum, n: c_int) {
     pending("mj_solveM2");
 }
 
@@ -327,12 +267,7 @@ pub unsafe extern "C" fn mj_subtreeVel(m: *const mjModel, d: *mut mjData) {
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_rne(
-    m: *const mjModel,
-    d: *mut mjData,
-    flg_acc: c_int,
-    result: *mut mjtNum,
-) {
+pub unsafe extern "C" fn mj_rne(m: *const mjModel, d: *mut mjData, flg_acc: c_int, result: *mut mjtNum) {
     pending("mj_rne");
 }
 
@@ -362,22 +297,12 @@ pub unsafe extern "C" fn mj_referenceConstraint(m: *const mjModel, d: *mut mjDat
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_constraintUpdate(
-    m: *const mjModel,
-    d: *mut mjData,
-    jar: *const mjtNum,
-    cost: *mut mjtNum,
-    flg_coneHessian: c_int,
-) {
+pub unsafe extern "C" fn mj_constraintUpdate(m: *const mjModel, d: *mut mjData, jar: *const mjtNum, cost: *mut mjtNum, flg_coneHessian: c_int) {
     pending("mj_constraintUpdate");
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_addContact(
-    m: *const mjModel,
-    d: *mut mjData,
-    con: *const mjContact,
-) -> c_int {
+pub unsafe extern "C" fn mj_addContact(m: *const mjModel, d: *mut mjData, con: *const mjContact) -> c_int {
     pending("mj_addContact");
     0 as c_int
 }
@@ -401,101 +326,47 @@ pub unsafe extern "C" fn mj_isDual(m: *const mjModel) -> c_int {
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_mulJacVec(
-    m: *const mjModel,
-    d: *mut mjData,
-    res: *mut mjtNum,
-    vec: *const mjtNum,
-) {
+pub unsafe extern "C" fn mj_mulJacVec(m: *const mjModel, d: *mut mjData, res: *mut mjtNum, vec: *const mjtNum) {
     pending("mj_mulJacVec");
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_mulJacTVec(
-    m: *const mjModel,
-    d: *mut mjData,
-    res: *mut mjtNum,
-    vec: *const mjtNum,
-) {
+pub unsafe extern "C" fn mj_mulJacTVec(m: *const mjModel, d: *mut mjData, res: *mut mjtNum, vec: *const mjtNum) {
     pending("mj_mulJacTVec");
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_jac(
-    m: *const mjModel,
-    d: *const mjData,
-    jacp: *mut mjtNum,
-    jacr: *mut mjtNum,
-    point: *const mjtNum,
-    body: c_int,
-) {
+pub unsafe extern "C" fn mj_jac(m: *const mjModel, d: *const mjData, jacp: *mut mjtNum, jacr: *mut mjtNum, point: *const mjtNum, body: c_int) {
     pending("mj_jac");
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_jacBody(
-    m: *const mjModel,
-    d: *const mjData,
-    jacp: *mut mjtNum,
-    jacr: *mut mjtNum,
-    body: c_int,
-) {
+pub unsafe extern "C" fn mj_jacBody(m: *const mjModel, d: *const mjData, jacp: *mut mjtNum, jacr: *mut mjtNum, body: c_int) {
     pending("mj_jacBody");
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_jacBodyCom(
-    m: *const mjModel,
-    d: *const mjData,
-    jacp: *mut mjtNum,
-    jacr: *mut mjtNum,
-    body: c_int,
-) {
+pub unsafe extern "C" fn mj_jacBodyCom(m: *const mjModel, d: *const mjData, jacp: *mut mjtNum, jacr: *mut mjtNum, body: c_int) {
     pending("mj_jacBodyCom");
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_jacSubtreeCom(
-    m: *const mjModel,
-    d: *mut mjData,
-    jacp: *mut mjtNum,
-    body: c_int,
-) {
+pub unsafe extern "C" fn mj_jacSubtreeCom(m: *const mjModel, d: *mut mjData, jacp: *mut mjtNum, body: c_int) {
     pending("mj_jacSubtreeCom");
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_jacGeom(
-    m: *const mjModel,
-    d: *const mjData,
-    jacp: *mut mjtNum,
-    jacr: *mut mjtNum,
-    geom: c_int,
-) {
+pub unsafe extern "C" fn mj_jacGeom(m: *const mjModel, d: *const mjData, jacp: *mut mjtNum, jacr: *mut mjtNum, geom: c_int) {
     pending("mj_jacGeom");
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_jacSite(
-    m: *const mjModel,
-    d: *const mjData,
-    jacp: *mut mjtNum,
-    jacr: *mut mjtNum,
-    site: c_int,
-) {
+pub unsafe extern "C" fn mj_jacSite(m: *const mjModel, d: *const mjData, jacp: *mut mjtNum, jacr: *mut mjtNum, site: c_int) {
     pending("mj_jacSite");
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_jacPointAxis(
-    m: *const mjModel,
-    d: *mut mjData,
-    jacPoint: *mut mjtNum,
-    jacAxis: *mut mjtNum,
-    point: *const mjtNum,
-    axis: *const mjtNum,
-    body: c_int,
-) {
+pub unsafe extern "C" fn mj_jacPointAxis(m: *const mjModel, d: *mut mjData, jacPoint: *mut mjtNum, jacAxis: *mut mjtNum, point: *const mjtNum, axis: *const mjtNum, body: c_int) {
     pending("mj_jacPointAxis");
 }
 
@@ -517,102 +388,47 @@ pub unsafe extern "C" fn mj_fullM(m: *const mjModel, dst: *mut mjtNum, M: *const
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_mulM(
-    m: *const mjModel,
-    d: *const mjData,
-    res: *mut mjtNum,
-    vec: *const mjtNum,
-) {
+pub unsafe extern "C" fn mj_mulM(m: *const mjModel, d: *const mjData, res: *mut mjtNum, vec: *const mjtNum) {
     pending("mj_mulM");
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_mulM2(
-    m: *const mjModel,
-    d: *const mjData,
-    res: *mut mjtNum,
-    vec: *const mjtNum,
-) {
+pub unsafe extern "C" fn mj_mulM2(m: *const mjModel, d: *const mjData, res: *mut mjtNum, vec: *const mjtNum) {
     pending("mj_mulM2");
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_addM(
-    m: *const mjModel,
-    d: *mut mjData,
-    dst: *mut mjtNum,
-    rownnz: *mut c_int,
-    rowadr: *mut c_int,
-    colind: *mut c_int,
-) {
+pub unsafe extern "C" fn mj_addM(m: *const mjModel, d: *mut mjData, dst: *mut mjtNum, rownnz: *mut c_int, rowadr: *mut c_int, colind: *mut c_int) {
     pending("mj_addM");
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_applyFT(
-    m: *const mjModel,
-    d: *mut mjData,
-    force: *const mjtNum,
-    torque: *const mjtNum,
-    point: *const mjtNum,
-    body: c_int,
-    qfrc_target: *mut mjtNum,
-) {
+pub unsafe extern "C" fn mj_applyFT(m: *const mjModel, d: *mut mjData, force: *const mjtNum, torque: *const mjtNum, point: *const mjtNum, body: c_int, qfrc_target: *mut mjtNum) {
     pending("mj_applyFT");
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_objectVelocity(
-    m: *const mjModel,
-    d: *const mjData,
-    objtype: c_int,
-    objid: c_int,
-    res: *mut mjtNum,
-    flg_local: c_int,
-) {
+pub unsafe extern "C" fn mj_objectVelocity(m: *const mjModel, d: *const mjData, objtype: c_int, objid: c_int, res: *mut mjtNum, flg_local: c_int) {
     pending("mj_objectVelocity");
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_objectAcceleration(
-    m: *const mjModel,
-    d: *const mjData,
-    objtype: c_int,
-    objid: c_int,
-    res: *mut mjtNum,
-    flg_local: c_int,
-) {
+pub unsafe extern "C" fn mj_objectAcceleration(m: *const mjModel, d: *const mjData, objtype: c_int, objid: c_int, res: *mut mjtNum, flg_local: c_int) {
     pending("mj_objectAcceleration");
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_contactForce(
-    m: *const mjModel,
-    d: *const mjData,
-    id: c_int,
-    result: *mut mjtNum,
-) {
+pub unsafe extern "C" fn mj_contactForce(m: *const mjModel, d: *const mjData, id: c_int, result: *mut mjtNum) {
     pending("mj_contactForce");
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_differentiatePos(
-    m: *const mjModel,
-    qvel: *mut mjtNum,
-    dt: mjtNum,
-    qpos1: *const mjtNum,
-    qpos2: *const mjtNum,
-) {
+pub unsafe extern "C" fn mj_differentiatePos(m: *const mjModel, qvel: *mut mjtNum, dt: mjtNum, qpos1: *const mjtNum, qpos2: *const mjtNum) {
     pending("mj_differentiatePos");
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_integratePos(
-    m: *const mjModel,
-    qpos: *mut mjtNum,
-    qvel: *const mjtNum,
-    dt: mjtNum,
-) {
+pub unsafe extern "C" fn mj_integratePos(m: *const mjModel, qpos: *mut mjtNum, qvel: *const mjtNum, dt: mjtNum) {
     pending("mj_integratePos");
 }
 
@@ -622,15 +438,7 @@ pub unsafe extern "C" fn mj_normalizeQuat(m: *const mjModel, qpos: *mut mjtNum) 
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_local2Global(
-    d: *mut mjData,
-    xpos: *mut mjtNum,
-    xmat: *mut mjtNum,
-    pos: *const mjtNum,
-    quat: *const mjtNum,
-    body: c_int,
-    sameframe: mjtByte,
-) {
+pub unsafe extern "C" fn mj_local2Global(d: *mut mjData, xpos: *mut mjtNum, xmat: *mut mjtNum, pos: *const mjtNum, quat: *const mjtNum, body: c_int, sameframe: mjtByte) {
     pending("mj_local2Global");
 }
 
@@ -646,67 +454,31 @@ pub unsafe extern "C" fn mj_setTotalmass(m: *mut mjModel, newmass: mjtNum) {
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_ray(
-    m: *const mjModel,
-    d: *const mjData,
-    pnt: *const mjtNum,
-    vec: *const mjtNum,
-    geomgroup: *const mjtByte,
-    flg_static: mjtByte,
-    bodyexclude: c_int,
-    geomid: *mut c_int,
-) -> mjtNum {
+pub unsafe extern "C" fn mj_ray(m: *const mjModel, d: *const mjData, pnt: *const mjtNum, vec: *const mjtNum, geomgroup: *const mjtByte, flg_static: mjtByte, bodyexclude: c_int, geomid: *mut c_int) -> mjtNum {
     pending("mj_ray");
     0.0
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_rayHfield(
-    m: *const mjModel,
-    d: *const mjData,
-    geomid: c_int,
-    pnt: *const mjtNum,
-    vec: *const mjtNum,
-) -> mjtNum {
+pub unsafe extern "C" fn mj_rayHfield(m: *const mjModel, d: *const mjData, geomid: c_int, pnt: *const mjtNum, vec: *const mjtNum) -> mjtNum {
     pending("mj_rayHfield");
     0.0
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_rayMesh(
-    m: *const mjModel,
-    d: *const mjData,
-    geomid: c_int,
-    pnt: *const mjtNum,
-    vec: *const mjtNum,
-) -> mjtNum {
+pub unsafe extern "C" fn mj_rayMesh(m: *const mjModel, d: *const mjData, geomid: c_int, pnt: *const mjtNum, vec: *const mjtNum) -> mjtNum {
     pending("mj_rayMesh");
     0.0
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mju_rayGeom(
-    pos: *const mjtNum,
-    mat: *const mjtNum,
-    size: *const mjtNum,
-    pnt: *const mjtNum,
-    vec: *const mjtNum,
-    geomtype: c_int,
-) -> mjtNum {
+pub unsafe extern "C" fn mju_rayGeom(pos: *const mjtNum, mat: *const mjtNum, size: *const mjtNum, pnt: *const mjtNum, vec: *const mjtNum, geomtype: c_int) -> mjtNum {
     pending("mju_rayGeom");
     0.0
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mju_raySkin(
-    nface: c_int,
-    nvert: c_int,
-    face: *const c_int,
-    vert: *const f32,
-    pnt: *const mjtNum,
-    vec: *const mjtNum,
-    vertid: *mut c_int,
-) -> mjtNum {
+pub unsafe extern "C" fn mju_raySkin(nface: c_int, nvert: c_int, face: *const c_int, vert: *const f32, pnt: *const mjtNum, vec: *const mjtNum, vertid: *mut c_int) -> mjtNum {
     pending("mju_raySkin");
     0.0
 }
@@ -768,12 +540,7 @@ pub unsafe extern "C" fn mju_addToScl3(res: *mut mjtNum, vec: *const mjtNum, scl
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mju_addScl3(
-    res: *mut mjtNum,
-    vec1: *const mjtNum,
-    vec2: *const mjtNum,
-    scl: mjtNum,
-) {
+pub unsafe extern "C" fn mju_addScl3(res: *mut mjtNum, vec1: *const mjtNum, vec2: *const mjtNum, scl: mjtNum) {
     pending("mju_addScl3");
 }
 
@@ -865,22 +632,12 @@ pub unsafe extern "C" fn mju_scl(res: *mut mjtNum, vec: *const mjtNum, scl: mjtN
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mju_add(
-    res: *mut mjtNum,
-    vec1: *const mjtNum,
-    vec2: *const mjtNum,
-    n: c_int,
-) {
+pub unsafe extern "C" fn mju_add(res: *mut mjtNum, vec1: *const mjtNum, vec2: *const mjtNum, n: c_int) {
     pending("mju_add");
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mju_sub(
-    res: *mut mjtNum,
-    vec1: *const mjtNum,
-    vec2: *const mjtNum,
-    n: c_int,
-) {
+pub unsafe extern "C" fn mju_sub(res: *mut mjtNum, vec1: *const mjtNum, vec2: *const mjtNum, n: c_int) {
     pending("mju_sub");
 }
 
@@ -900,13 +657,7 @@ pub unsafe extern "C" fn mju_addToScl(res: *mut mjtNum, vec: *const mjtNum, scl:
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mju_addScl(
-    res: *mut mjtNum,
-    vec1: *const mjtNum,
-    vec2: *const mjtNum,
-    scl: mjtNum,
-    n: c_int,
-) {
+pub unsafe extern "C" fn mju_addScl(res: *mut mjtNum, vec1: *const mjtNum, vec2: *const mjtNum, scl: mjtNum, n: c_int) {
     pending("mju_addScl");
 }
 
@@ -929,24 +680,12 @@ pub unsafe extern "C" fn mju_dot(vec1: *const mjtNum, vec2: *const mjtNum, n: c_
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mju_mulMatVec(
-    res: *mut mjtNum,
-    mat: *const mjtNum,
-    vec: *const mjtNum,
-    nr: c_int,
-    nc: c_int,
-) {
+pub unsafe extern "C" fn mju_mulMatVec(res: *mut mjtNum, mat: *const mjtNum, vec: *const mjtNum, nr: c_int, nc: c_int) {
     pending("mju_mulMatVec");
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mju_mulMatTVec(
-    res: *mut mjtNum,
-    mat: *const mjtNum,
-    vec: *const mjtNum,
-    nr: c_int,
-    nc: c_int,
-) {
+pub unsafe extern "C" fn mju_mulMatTVec(res: *mut mjtNum, mat: *const mjtNum, vec: *const mjtNum, nr: c_int, nc: c_int) {
     pending("mju_mulMatTVec");
 }
 
@@ -956,61 +695,27 @@ pub unsafe extern "C" fn mju_transpose(res: *mut mjtNum, mat: *const mjtNum, nr:
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mju_mulMatMat(
-    res: *mut mjtNum,
-    mat1: *const mjtNum,
-    mat2: *const mjtNum,
-    r1: c_int,
-    c1: c_int,
-    c2: c_int,
-) {
+pub unsafe extern "C" fn mju_mulMatMat(res: *mut mjtNum, mat1: *const mjtNum, mat2: *const mjtNum, r1: c_int, c1: c_int, c2: c_int) {
     pending("mju_mulMatMat");
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mju_mulMatMatT(
-    res: *mut mjtNum,
-    mat1: *const mjtNum,
-    mat2: *const mjtNum,
-    r1: c_int,
-    c1: c_int,
-    r2: c_int,
-) {
+pub unsafe extern "C" fn mju_mulMatMatT(res: *mut mjtNum, mat1: *const mjtNum, mat2: *const mjtNum, r1: c_int, c1: c_int, r2: c_int) {
     pending("mju_mulMatMatT");
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mju_mulMatTMat(
-    res: *mut mjtNum,
-    mat1: *const mjtNum,
-    mat2: *const mjtNum,
-    r1: c_int,
-    c1: c_int,
-    c2: c_int,
-) {
+pub unsafe extern "C" fn mju_mulMatTMat(res: *mut mjtNum, mat1: *const mjtNum, mat2: *const mjtNum, r1: c_int, c1: c_int, c2: c_int) {
     pending("mju_mulMatTMat");
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mju_sqrMatTD(
-    res: *mut mjtNum,
-    mat: *const mjtNum,
-    diag: *const mjtNum,
-    nr: c_int,
-    nc: c_int,
-) {
+pub unsafe extern "C" fn mju_sqrMatTD(res: *mut mjtNum, mat: *const mjtNum, diag: *const mjtNum, nr: c_int, nc: c_int) {
     pending("mju_sqrMatTD");
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mju_transformSpatial(
-    res: *mut mjtNum,
-    vec: *const mjtNum,
-    flg_force: c_int,
-    newpos: *const mjtNum,
-    oldpos: *const mjtNum,
-    rotnew2old: *const mjtNum,
-) {
+pub unsafe extern "C" fn mju_transformSpatial(res: *mut mjtNum, vec: *const mjtNum, flg_force: c_int, newpos: *const mjtNum, oldpos: *const mjtNum, rotnew2old: *const mjtNum) {
     pending("mju_transformSpatial");
 }
 
@@ -1030,11 +735,7 @@ pub unsafe extern "C" fn mju_mulQuat(res: *mut mjtNum, quat1: *const mjtNum, qua
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mju_mulQuatAxis(
-    res: *mut mjtNum,
-    quat: *const mjtNum,
-    axis: *const mjtNum,
-) {
+pub unsafe extern "C" fn mju_mulQuatAxis(res: *mut mjtNum, quat: *const mjtNum, axis: *const mjtNum) {
     pending("mju_mulQuatAxis");
 }
 
@@ -1079,34 +780,17 @@ pub unsafe extern "C" fn mju_quatZ2Vec(quat: *mut mjtNum, vec: *const mjtNum) {
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mju_mulPose(
-    posres: *mut mjtNum,
-    quatres: *mut mjtNum,
-    pos1: *const mjtNum,
-    quat1: *const mjtNum,
-    pos2: *const mjtNum,
-    quat2: *const mjtNum,
-) {
+pub unsafe extern "C" fn mju_mulPose(posres: *mut mjtNum, quatres: *mut mjtNum, pos1: *const mjtNum, quat1: *const mjtNum, pos2: *const mjtNum, quat2: *const mjtNum) {
     pending("mju_mulPose");
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mju_negPose(
-    posres: *mut mjtNum,
-    quatres: *mut mjtNum,
-    pos: *const mjtNum,
-    quat: *const mjtNum,
-) {
+pub unsafe extern "C" fn mju_negPose(posres: *mut mjtNum, quatres: *mut mjtNum, pos: *const mjtNum, quat: *const mjtNum) {
     pending("mju_negPose");
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mju_trnVecPose(
-    res: *mut mjtNum,
-    pos: *const mjtNum,
-    quat: *const mjtNum,
-    vec: *const mjtNum,
-) {
+pub unsafe extern "C" fn mju_trnVecPose(res: *mut mjtNum, pos: *const mjtNum, quat: *const mjtNum, vec: *const mjtNum) {
     pending("mju_trnVecPose");
 }
 
@@ -1117,98 +801,52 @@ pub unsafe extern "C" fn mju_cholFactor(mat: *mut mjtNum, n: c_int, mindiag: mjt
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mju_cholSolve(
-    res: *mut mjtNum,
-    mat: *const mjtNum,
-    vec: *const mjtNum,
-    n: c_int,
-) {
+pub unsafe extern "C" fn mju_cholSolve(res: *mut mjtNum, mat: *const mjtNum, vec: *const mjtNum, n: c_int) {
     pending("mju_cholSolve");
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mju_cholUpdate(
-    mat: *mut mjtNum,
-    x: *mut mjtNum,
-    n: c_int,
-    flg_plus: c_int,
-) -> c_int {
+pub unsafe extern "C" fn mju_cholUpdate(mat: *mut mjtNum, x: *mut mjtNum, n: c_int, flg_plus: c_int) -> c_int {
     pending("mju_cholUpdate");
     0 as c_int
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mju_eig3(
-    eigval: *mut mjtNum,
-    eigvec: *mut mjtNum,
-    quat: *mut mjtNum,
-    mat: *const mjtNum,
-) -> c_int {
+pub unsafe extern "C" fn mju_eig3(eigval: *mut mjtNum, eigvec: *mut mjtNum, quat: *mut mjtNum, mat: *const mjtNum) -> c_int {
     pending("mju_eig3");
     0 as c_int
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mju_muscleGain(
-    len: mjtNum,
-    vel: mjtNum,
-    lengthrange: *const mjtNum,
-    acc0: mjtNum,
-    prm: *const mjtNum,
-) -> mjtNum {
+pub unsafe extern "C" fn mju_muscleGain(len: mjtNum, vel: mjtNum, lengthrange: *const mjtNum, acc0: mjtNum, prm: *const mjtNum) -> mjtNum {
     pending("mju_muscleGain");
     0.0
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mju_muscleBias(
-    len: mjtNum,
-    lengthrange: *const mjtNum,
-    acc0: mjtNum,
-    prm: *const mjtNum,
-) -> mjtNum {
+pub unsafe extern "C" fn mju_muscleBias(len: mjtNum, lengthrange: *const mjtNum, acc0: mjtNum, prm: *const mjtNum) -> mjtNum {
     pending("mju_muscleBias");
     0.0
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mju_muscleDynamics(
-    ctrl: mjtNum,
-    act: mjtNum,
-    prm: *const mjtNum,
-) -> mjtNum {
+pub unsafe extern "C" fn mju_muscleDynamics(ctrl: mjtNum, act: mjtNum, prm: *const mjtNum) -> mjtNum {
     pending("mju_muscleDynamics");
     0.0
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mju_encodePyramid(
-    pyramid: *mut mjtNum,
-    force: *const mjtNum,
-    mu: *const mjtNum,
-    dim: c_int,
-) {
+pub unsafe extern "C" fn mju_encodePyramid(pyramid: *mut mjtNum, force: *const mjtNum, mu: *const mjtNum, dim: c_int) {
     pending("mju_encodePyramid");
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mju_decodePyramid(
-    force: *mut mjtNum,
-    pyramid: *const mjtNum,
-    mu: *const mjtNum,
-    dim: c_int,
-) {
+pub unsafe extern "C" fn mju_decodePyramid(force: *mut mjtNum, pyramid: *const mjtNum, mu: *const mjtNum, dim: c_int) {
     pending("mju_decodePyramid");
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mju_springDamper(
-    pos0: mjtNum,
-    vel0: mjtNum,
-    Kp: mjtNum,
-    Kv: mjtNum,
-    dt: mjtNum,
-) -> mjtNum {
+pub unsafe extern "C" fn mju_springDamper(pos0: mjtNum, vel0: mjtNum, Kp: mjtNum, Kv: mjtNum, dt: mjtNum) -> mjtNum {
     pending("mju_springDamper");
     0.0
 }
@@ -1316,11 +954,7 @@ pub unsafe extern "C" fn mju_Halton(index: c_int, base: c_int) -> mjtNum {
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mju_strncpy(
-    dst: *mut c_char,
-    src: *const c_char,
-    n: c_int,
-) -> *mut c_char {
+pub unsafe extern "C" fn mju_strncpy(dst: *mut c_char, src: *const c_char, n: c_int) -> *mut c_char {
     pending("mju_strncpy");
     std::ptr::null_mut()
 }
@@ -1332,15 +966,6 @@ pub unsafe extern "C" fn mju_sigmoid(x: mjtNum) -> mjtNum {
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mjd_transitionFD(
-    m: *const mjModel,
-    d: *mut mjData,
-    eps: mjtNum,
-    centered: mjtByte,
-    A: *mut mjtNum,
-    B: *mut mjtNum,
-    C: *mut mjtNum,
-    D: *mut mjtNum,
-) {
+pub unsafe extern "C" fn mjd_transitionFD(m: *const mjModel, d: *mut mjData, eps: mjtNum, centered: mjtByte, A: *mut mjtNum, B: *mut mjtNum, C: *mut mjtNum, D: *mut mjtNum) {
     pending("mjd_transitionFD");
 }

@@ -13,14 +13,7 @@ pub unsafe extern "C" fn mj_EulerSkip(m: *const mjModel, d: *mut mjData, skipfac
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_factorI(
-    m: *const mjModel,
-    d: *mut mjData,
-    M: *const mjtNum,
-    qLD: *mut mjtNum,
-    qLDiagInv: *mut mjtNum,
-    qLDiagSqrtInv: *mut mjtNum,
-) {
+pub unsafe extern "C" fn mj_factorI(m: *const mjModel, d: *mut mjData, M: *const mjtNum, qLD: *mut mjtNum, qLDiagInv: *mut mjtNum, qLDiagSqrtInv: *mut mjtNum) {
     pending("mj_factorI");
 }
 
@@ -35,67 +28,28 @@ pub unsafe extern "C" fn mj_implicitSkip(m: *const mjModel, d: *mut mjData, skip
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_jacDifPair(
-    m: *const mjModel,
-    d: *const mjData,
-    chain: *mut c_int,
-    b1: c_int,
-    b2: c_int,
-    pos1: *const mjtNum,
-    pos2: *const mjtNum,
-    jac1p: *mut mjtNum,
-    jac2p: *mut mjtNum,
-    jacdifp: *mut mjtNum,
-    jac1r: *mut mjtNum,
-    jac2r: *mut mjtNum,
-    jacdifr: *mut mjtNum,
-) -> c_int {
+pub unsafe extern "C" fn mj_jacDifPair(m: *const mjModel, d: *const mjData, chain: *mut c_int, b1: c_int, b2: c_int, pos1: *const mjtNum, pos2: *const mjtNum, jac1p: *mut mjtNum, jac2p: *mut mjtNum, jacdifp: *mut mjtNum, jac1r: *mut mjtNum, jac2r: *mut mjtNum, jacdifr: *mut mjtNum) -> c_int {
     pending("mj_jacDifPair");
     0 as c_int
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_makeMSparse(
-    m: *const mjModel,
-    d: *mut mjData,
-    rownnz: *mut c_int,
-    rowadr: *mut c_int,
-    colind: *mut c_int,
-) {
+pub unsafe extern "C" fn mj_makeMSparse(m: *const mjModel, d: *mut mjData, rownnz: *mut c_int, rowadr: *mut c_int, colind: *mut c_int) {
     pending("mj_makeMSparse");
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_setMSparse(
-    m: *const mjModel,
-    d: *mut mjData,
-    dst: *mut mjtNum,
-    rownnz: *const c_int,
-    rowadr: *const c_int,
-    colind: *const c_int,
-) {
+pub unsafe extern "C" fn mj_setMSparse(m: *const mjModel, d: *mut mjData, dst: *mut mjtNum, rownnz: *const c_int, rowadr: *const c_int, colind: *const c_int) {
     pending("mj_setMSparse");
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_solveLD(
-    m: *const mjModel,
-    x: *mut mjtNum,
-    y: *const mjtNum,
-    n: c_int,
-    qLD: *const mjtNum,
-    qLDiagInv: *const mjtNum,
-) {
+pub unsafe extern "C" fn mj_solveLD(m: *const mjModel, x: *mut mjtNum, y: *const mjtNum, n: c_int, qLD: *const mjtNum, qLDiagInv: *const mjtNum) {
     pending("mj_solveLD");
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_stepSkip(
-    m: *const mjModel,
-    d: *mut mjData,
-    skipstage: c_int,
-    skipsensor: c_int,
-) {
+pub unsafe extern "C" fn mj_stepSkip(m: *const mjModel, d: *mut mjData, skipstage: c_int, skipsensor: c_int) {
     pending("mj_stepSkip");
 }
 
@@ -111,12 +65,7 @@ pub unsafe extern "C" fn mjd_passive_vel(m: *const mjModel, d: *mut mjData, DfDv
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mjd_passive_velFD(
-    m: *const mjModel,
-    d: *mut mjData,
-    eps: mjtNum,
-    DfDv: *mut mjtNum,
-) {
+pub unsafe extern "C" fn mjd_passive_velFD(m: *const mjModel, d: *mut mjData, eps: mjtNum, DfDv: *mut mjtNum) {
     pending("mjd_passive_velFD");
 }
 
@@ -131,34 +80,18 @@ pub unsafe extern "C" fn mjd_smooth_velFD(m: *const mjModel, d: *mut mjData, eps
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mju_QCQP2(
-    res: *mut mjtNum,
-    Ain: *const mjtNum,
-    bin: *const mjtNum,
-    d: *const mjtNum,
-    r: mjtNum,
-) -> c_int {
+pub unsafe extern "C" fn mju_QCQP2(res: *mut mjtNum, Ain: *const mjtNum, bin: *const mjtNum, d: *const mjtNum, r: mjtNum) -> c_int {
     pending("mju_QCQP2");
     0 as c_int
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mju_QCQP3(
-    res: *mut mjtNum,
-    Ain: *const mjtNum,
-    bin: *const mjtNum,
-    d: *const mjtNum,
-    r: mjtNum,
-) -> c_int {
+pub unsafe extern "C" fn mju_QCQP3(res: *mut mjtNum, Ain: *const mjtNum, bin: *const mjtNum, d: *const mjtNum, r: mjtNum) -> c_int {
     pending("mju_QCQP3");
     0 as c_int
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mju_geomSemiAxes(
-    m: *const mjModel,
-    geom_id: c_int,
-    semiaxes: *mut mjtNum,
-) {
+pub unsafe extern "C" fn mju_geomSemiAxes(m: *const mjModel, geom_id: c_int, semiaxes: *mut mjtNum) {
     pending("mju_geomSemiAxes");
 }
