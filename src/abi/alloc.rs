@@ -293,12 +293,12 @@ pub unsafe fn reset_data(m: &mjModel, d: &mut mjData, debug: u8) {
     }
     dv.mocap_pos.fill(0.0);
     dv.mocap_quat.fill(0.0);
-    dv.qpos.copy_from_slice(mv.qpos0);
-    for (i, &id) in mv.body_mocapid.iter().enumerate() {
+    dv.qpos.copy_from_slice(mv.qpos0());
+    for (i, &id) in mv.body_mocapid().iter().enumerate() {
         if id >= 0 {
             let id = id as usize;
-            dv.mocap_pos[3 * id..3 * id + 3].copy_from_slice(&mv.body_pos[3 * i..3 * i + 3]);
-            dv.mocap_quat[4 * id..4 * id + 4].copy_from_slice(&mv.body_quat[4 * i..4 * i + 4]);
+            dv.mocap_pos[3 * id..3 * id + 3].copy_from_slice(&mv.body_pos()[3 * i..3 * i + 3]);
+            dv.mocap_quat[4 * id..4 * id + 4].copy_from_slice(&mv.body_quat()[4 * i..4 * i + 4]);
         }
     }
 }
@@ -316,15 +316,15 @@ pub unsafe fn reset_data_keyframe(m: &mjModel, d: &mut mjData, key: i32) {
     let mv = view::Model::new(m);
     let dv = view::Data::new(m, d);
     let rows = |a: &[f64], n: usize| -> Vec<f64> { a[k * n..(k + 1) * n].to_vec() };
-    dv.raw.time = mv.key_time[k];
-    dv.qpos.copy_from_slice(&rows(mv.key_qpos, dv.qpos.len()));
-    dv.qvel.copy_from_slice(&rows(mv.key_qvel, dv.qvel.len()));
-    dv.act.copy_from_slice(&rows(mv.key_act, dv.act.len()));
+    dv.raw.time = mv.key_time()[k];
+    dv.qpos.copy_from_slice(&rows(mv.key_qpos(), dv.qpos.len()));
+    dv.qvel.copy_from_slice(&rows(mv.key_qvel(), dv.qvel.len()));
+    dv.act.copy_from_slice(&rows(mv.key_act(), dv.act.len()));
     dv.mocap_pos
-        .copy_from_slice(&rows(mv.key_mpos, dv.mocap_pos.len()));
+        .copy_from_slice(&rows(mv.key_mpos(), dv.mocap_pos.len()));
     dv.mocap_quat
-        .copy_from_slice(&rows(mv.key_mquat, dv.mocap_quat.len()));
-    dv.ctrl.copy_from_slice(&rows(mv.key_ctrl, dv.ctrl.len()));
+        .copy_from_slice(&rows(mv.key_mquat(), dv.mocap_quat.len()));
+    dv.ctrl.copy_from_slice(&rows(mv.key_ctrl(), dv.ctrl.len()));
 }
 
 pub fn default_solref() -> [f64; 2] {

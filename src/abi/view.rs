@@ -6,28 +6,34 @@
 
 use super::*;
 
+#[inline(always)]
 unsafe fn view<'a, T>(ptr: *const T, len: usize) -> &'a [T] {
-    if len == 0 || ptr.is_null() {
-        &[]
-    } else {
-        std::slice::from_raw_parts(ptr, len)
-    }
+    view_mut(ptr as *mut T, len)
 }
 
+/// Branch-free: a NULL pointer (only ever paired with length 0) becomes a dangling one.
+#[inline(always)]
 unsafe fn view_mut<'a, T>(ptr: *mut T, len: usize) -> &'a mut [T] {
-    if len == 0 || ptr.is_null() {
-        &mut []
+    let ptr = if ptr.is_null() {
+        std::ptr::NonNull::dangling().as_ptr()
     } else {
-        std::slice::from_raw_parts_mut(ptr, len)
-    }
+        ptr
+    };
+    let len = if ptr == std::ptr::NonNull::dangling().as_ptr() {
+        0
+    } else {
+        len
+    };
+    std::slice::from_raw_parts_mut(ptr, len)
 }
 
 macro_rules! model_views {
     ($(($t:ident, $name:ident, $d1:ident, $($d2:tt)+)),* $(,)?) => {
-        /// Read-only view of a compiled model.
+        /// Read-only view of a compiled model: sizes, options and statistics through `raw`, every
+        /// array through the method of its name (free to build: slices are made on access).
+        #[derive(Clone, Copy)]
         pub struct Model<'a> {
             pub raw: &'a mjModel,
-            $(pub $name: &'a [elem_ty!($t)],)*
         }
 
         /// Writable view of a model under construction (compiler, `mj_setConst`).
@@ -39,8 +45,16 @@ macro_rules! model_views {
             /// # Safety
             /// `m` must come from `mj_makeModel` (or have the same array layout).
             pub unsafe fn new(m: &'a mjModel) -> Self {
-                Model { raw: m, $($name: view(m.$name, row_len!(m, $d1, $($d2)+)),)* }
+                Model { raw: m }
             }
+
+            $(
+                #[inline(always)]
+                pub fn $name(&self) -> &'a [elem_ty!($t)] {
+                    // SAFETY: `new`'s contract: the array has this X-macro length.
+                    unsafe { view(self.raw.$name, row_len!(self.raw, $d1, $($d2)+)) }
+                }
+            )*
         }
 
         impl<'a> ModelMut<'a> {
