@@ -180,6 +180,7 @@ fn header(
         "_mjPRIVATE__set_tls_warning_fn",
         "_mjPRIVATE__get_xml_precision",
         "_mjPRIVATE__set_xml_precision",
+        "mj_validateReferences",
     ]
     .iter()
     .map(|s| s.to_string())

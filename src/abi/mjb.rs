@@ -127,7 +127,10 @@ pub fn load(data: &[u8]) -> Result<*mut mjModel, String> {
             if r.pos != data.len() {
                 return Err("Model file is too large".into());
             }
-            Ok(())
+            match validate::validate_references(view::Model::new(mm)) {
+                Some(e) => Err(e.into()),
+                None => Ok(()),
+            }
         })();
         if let Err(e) = result {
             alloc::delete_model(m);

@@ -351,3 +351,23 @@ pub unsafe extern "C" fn mj_deleteVFS(vfs: *mut mjVFS) {
         std::ptr::write_bytes(vfs, 0, 1);
     }
 }
+
+thread_local! {
+    static LAST_VALIDATION: std::cell::RefCell<std::ffi::CString> = std::cell::RefCell::new(std::ffi::CString::default());
+}
+
+/// `mj_validateReferences` (exported by 2.2.2 outside mujoco.h): NULL when the model is sound,
+/// else a message valid until this thread's next call.
+#[no_mangle]
+pub unsafe extern "C" fn mj_validateReferences(m: *const mjModel) -> *const c_char {
+    let Some(m) = m.as_ref() else {
+        return std::ptr::null();
+    };
+    match validate::validate_references(view::Model::new(m)) {
+        None => std::ptr::null(),
+        Some(msg) => LAST_VALIDATION.with(|c| {
+            *c.borrow_mut() = std::ffi::CString::new(msg).unwrap_or_default();
+            c.borrow().as_ptr()
+        }),
+    }
+}

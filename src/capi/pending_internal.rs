@@ -54,12 +54,6 @@ pub unsafe extern "C" fn mj_stepSkip(m: *const mjModel, d: *mut mjData, skipstag
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_validateReferences(m: *const mjModel) -> *const c_char {
-    pending("mj_validateReferences");
-    std::ptr::null()
-}
-
-#[no_mangle]
 pub unsafe extern "C" fn mjd_passive_vel(m: *const mjModel, d: *mut mjData, DfDv: *mut mjtNum) {
     pending("mjd_passive_vel");
 }
