@@ -141,10 +141,6 @@ int mj_setLengthRange(mjModel *m,
                       char *error,
                       int error_sz);
 
-void mj_printFormattedModel(const mjModel *m, const char *filename, const char *float_format);
-
-void mj_printModel(const mjModel *m, const char *filename);
-
 void mj_printFormattedData(const mjModel *m,
                            mjData *d,
                            const char *filename,
@@ -573,6 +569,10 @@ void mjd_transitionFD(const mjModel *m,
                       mjtNum *B,
                       mjtNum *C,
                       mjtNum *D);
+
+void mj_printFormattedModel(const mjModel *m, const char *filename, const char *float_format);
+
+void mj_printModel(const mjModel *m, const char *filename);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -51,6 +51,7 @@ pub mod mjb;
 pub mod mjdata;
 pub mod mjmodel;
 pub mod mjtnum;
+pub mod print;
 pub mod validate;
 pub mod view;
 

@@ -70,6 +70,29 @@ fn asctime_now() -> String {
     }
 }
 
+/// Writes to C's `stdout`, so output interleaves with the host program's printf as in C.
+pub fn c_stdout(text: &str) {
+    extern "C" {
+        static mut stdout: *mut libc::FILE;
+    }
+    let bytes = text.as_bytes();
+    // SAFETY: glibc's stdout stream is valid for the process lifetime.
+    unsafe {
+        libc::fwrite(bytes.as_ptr() as *const c_void, 1, bytes.len(), stdout);
+    }
+}
+
+/// Flushes C's `stdout`.
+pub fn c_stdout_flush() {
+    extern "C" {
+        static mut stdout: *mut libc::FILE;
+    }
+    // SAFETY: as in `c_stdout`.
+    unsafe {
+        libc::fflush(stdout);
+    }
+}
+
 fn c_message(msg: &str) -> Vec<u8> {
     let mut v: Vec<u8> = msg.bytes().filter(|&b| b != 0).take(999).collect();
     v.push(0);
@@ -87,8 +110,8 @@ pub fn error(msg: &str) {
             h(text.as_ptr() as *const c_char);
         } else {
             write_log("ERROR", msg);
-            print!("ERROR: {msg}\n\nPress Enter to exit ...");
-            let _ = std::io::stdout().flush();
+            c_stdout(&format!("ERROR: {msg}\n\nPress Enter to exit ..."));
+            c_stdout_flush();
             libc::getchar();
             libc::exit(1);
         }
@@ -106,8 +129,7 @@ pub fn warning(msg: &str) {
             h(text.as_ptr() as *const c_char);
         } else {
             write_log("WARNING", msg);
-            print!("WARNING: {msg}\n\n");
-            let _ = std::io::stdout().flush();
+            c_stdout(&format!("WARNING: {msg}\n\n"));
         }
     }
 }

@@ -10,6 +10,7 @@ pub mod io;
 pub mod pending;
 #[rustfmt::skip]
 pub mod pending_internal;
+pub mod print;
 pub mod util;
 pub mod xml;
 

@@ -82,16 +82,6 @@ pub unsafe extern "C" fn mj_setLengthRange(m: *mut mjModel, d: *mut mjData, inde
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_printFormattedModel(m: *const mjModel, filename: *const c_char, float_format: *const c_char) {
-    pending("mj_printFormattedModel");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_printModel(m: *const mjModel, filename: *const c_char) {
-    pending("mj_printModel");
-}
-
-#[no_mangle]
 pub unsafe extern "C" fn mj_printFormattedData(m: *const mjModel, d: *mut mjData, filename: *const c_char, float_format: *const c_char) {
     pending("mj_printFormattedData");
 }
