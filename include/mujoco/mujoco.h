@@ -148,14 +148,6 @@ void mj_printFormattedData(const mjModel *m,
 
 void mj_printData(const mjModel *m, mjData *d, const char *filename);
 
-void mju_printMat(const mjtNum *mat, int nr, int nc);
-
-void mju_printMatSparse(const mjtNum *mat,
-                        int nr,
-                        const int *rownnz,
-                        const int *rowadr,
-                        const int *colind);
-
 void mj_fwdPosition(const mjModel *m, mjData *d);
 
 void mj_fwdVelocity(const mjModel *m, mjData *d);
@@ -373,6 +365,15 @@ int mj_activate(const char *filename);
 
 void mj_deactivate(void);
 
+void mjd_transitionFD(const mjModel *m,
+                      mjData *d,
+                      mjtNum eps,
+                      mjtByte centered,
+                      mjtNum *A,
+                      mjtNum *B,
+                      mjtNum *C,
+                      mjtNum *D);
+
 void mju_zero3(mjtNum *res);
 
 void mju_copy3(mjtNum *res, const mjtNum *data);
@@ -505,6 +506,10 @@ int mju_cholUpdate(mjtNum *mat, mjtNum *x, int n, int flg_plus);
 
 int mju_eig3(mjtNum *eigval, mjtNum *eigvec, mjtNum *quat, const mjtNum *mat);
 
+int mju_QCQP2(mjtNum *res, const mjtNum *Ain, const mjtNum *bin, const mjtNum *d, mjtNum r);
+
+int mju_QCQP3(mjtNum *res, const mjtNum *Ain, const mjtNum *bin, const mjtNum *d, mjtNum r);
+
 mjtNum mju_muscleGain(mjtNum len,
                       mjtNum vel,
                       const mjtNum *lengthrange,
@@ -531,15 +536,13 @@ mjtNum mju_sign(mjtNum x);
 
 int mju_round(mjtNum x);
 
-const char *mju_type2Str(int type_);
-
-int mju_str2Type(const char *str);
-
-const char *mju_warningText(int warning, int info);
-
 int mju_isBad(mjtNum x);
 
 int mju_isZero(mjtNum *vec, int n);
+
+mjtNum mju_sigmoid(mjtNum x);
+
+mjtNum mju_Halton(int index, int base);
 
 mjtNum mju_standardNormal(mjtNum *num2);
 
@@ -555,20 +558,23 @@ void mju_insertionSort(mjtNum *list, int n);
 
 void mju_insertionSortInt(int *list, int n);
 
-mjtNum mju_Halton(int index, int base);
-
 char *mju_strncpy(char *dst, const char *src, int n);
 
-mjtNum mju_sigmoid(mjtNum x);
+const char *mju_type2Str(int type_);
 
-void mjd_transitionFD(const mjModel *m,
-                      mjData *d,
-                      mjtNum eps,
-                      mjtByte centered,
-                      mjtNum *A,
-                      mjtNum *B,
-                      mjtNum *C,
-                      mjtNum *D);
+int mju_str2Type(const char *str);
+
+const char *mju_warningText(int warning, int info);
+
+void mju_printMat(const mjtNum *mat, int nr, int nc);
+
+void mju_printMatSparse(const mjtNum *mat,
+                        int nr,
+                        const int *rownnz,
+                        const int *rowadr,
+                        const int *colind);
+
+void mju_geomSemiAxes(const mjModel *m, int geom_id, mjtNum *semiaxes);
 
 void mj_printFormattedModel(const mjModel *m, const char *filename, const char *float_format);
 

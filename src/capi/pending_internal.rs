@@ -72,20 +72,3 @@ pub unsafe extern "C" fn mjd_smooth_vel(m: *const mjModel, d: *mut mjData) {
 pub unsafe extern "C" fn mjd_smooth_velFD(m: *const mjModel, d: *mut mjData, eps: mjtNum) {
     pending("mjd_smooth_velFD");
 }
-
-#[no_mangle]
-pub unsafe extern "C" fn mju_QCQP2(res: *mut mjtNum, Ain: *const mjtNum, bin: *const mjtNum, d: *const mjtNum, r: mjtNum) -> c_int {
-    pending("mju_QCQP2");
-    0 as c_int
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mju_QCQP3(res: *mut mjtNum, Ain: *const mjtNum, bin: *const mjtNum, d: *const mjtNum, r: mjtNum) -> c_int {
-    pending("mju_QCQP3");
-    0 as c_int
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mju_geomSemiAxes(m: *const mjModel, geom_id: c_int, semiaxes: *mut mjtNum) {
-    pending("mju_geomSemiAxes");
-}
