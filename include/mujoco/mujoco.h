@@ -374,6 +374,10 @@ void mjd_transitionFD(const mjModel *m,
                       mjtNum *C,
                       mjtNum *D);
 
+void mj_printFormattedModel(const mjModel *m, const char *filename, const char *float_format);
+
+void mj_printModel(const mjModel *m, const char *filename);
+
 void mju_zero3(mjtNum *res);
 
 void mju_copy3(mjtNum *res, const mjtNum *data);
@@ -575,10 +579,6 @@ void mju_printMatSparse(const mjtNum *mat,
                         const int *colind);
 
 void mju_geomSemiAxes(const mjModel *m, int geom_id, mjtNum *semiaxes);
-
-void mj_printFormattedModel(const mjModel *m, const char *filename, const char *float_format);
-
-void mj_printModel(const mjModel *m, const char *filename);
 
 #ifdef __cplusplus
 }  // extern "C"
