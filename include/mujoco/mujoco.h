@@ -141,13 +141,6 @@ int mj_setLengthRange(mjModel *m,
                       char *error,
                       int error_sz);
 
-void mj_printFormattedData(const mjModel *m,
-                           mjData *d,
-                           const char *filename,
-                           const char *float_format);
-
-void mj_printData(const mjModel *m, mjData *d, const char *filename);
-
 void mj_fwdPosition(const mjModel *m, mjData *d);
 
 void mj_fwdVelocity(const mjModel *m, mjData *d);
@@ -377,6 +370,13 @@ void mjd_transitionFD(const mjModel *m,
 void mj_printFormattedModel(const mjModel *m, const char *filename, const char *float_format);
 
 void mj_printModel(const mjModel *m, const char *filename);
+
+void mj_printFormattedData(const mjModel *m,
+                           mjData *d,
+                           const char *filename,
+                           const char *float_format);
+
+void mj_printData(const mjModel *m, mjData *d, const char *filename);
 
 void mju_zero3(mjtNum *res);
 

@@ -492,3 +492,374 @@ fn keyframes_text(o: &mut String, mv: Model, fmt: &NumberFormat) {
         }
     }
 }
+
+/// True when constraint Jacobians are stored sparse (`mj_isSparse`).
+pub fn is_sparse(m: &mjModel) -> bool {
+    m.opt.jacobian == mjtJacobian::mjJAC_SPARSE as i32
+        || (m.opt.jacobian == mjtJacobian::mjJAC_AUTO as i32 && m.nv >= 60)
+}
+
+/// Dense nv x nv matrix from the tree-sparse storage of qM or qLD.
+fn tree_to_dense(mv: Model, packed: &[f64]) -> Vec<f64> {
+    let nv = mv.raw.nv.max(0) as usize;
+    let mut full = vec![0.0; nv * nv];
+    let mut adr = 0;
+    for i in 0..nv {
+        let mut j = i as i32;
+        while j >= 0 {
+            let ju = j as usize;
+            full[i * nv + ju] = packed[adr];
+            full[ju * nv + i] = packed[adr];
+            j = mv.dof_parentid()[ju];
+            adr += 1;
+        }
+    }
+    full
+}
+
+/// Dense rows x cols matrix from compressed-row storage.
+fn rows_to_dense(
+    mat: &[f64],
+    rows: usize,
+    cols: usize,
+    rownnz: &[i32],
+    rowadr: &[i32],
+    colind: &[i32],
+) -> Vec<f64> {
+    let mut full = vec![0.0; rows * cols];
+    for r in 0..rows {
+        let adr = rowadr[r].max(0) as usize;
+        for k in adr..adr + rownnz[r].max(0) as usize {
+            full[r * cols + colind[k] as usize] = mat[k];
+        }
+    }
+    full
+}
+
+struct DataPrinter<'f> {
+    o: String,
+    fmt: &'f NumberFormat,
+}
+
+impl DataPrinter<'_> {
+    fn array(&mut self, label: &str, nr: usize, nc: usize, data: &[f64]) {
+        if nr == 0 || nc == 0 {
+            return;
+        }
+        let _ = write!(self.o, "{label}\n  ");
+        for r in 0..nr {
+            for c in 0..nc {
+                self.fmt.real(&mut self.o, data[c + r * nc]);
+                self.o.push(' ');
+            }
+            self.o.push_str("\n  ");
+        }
+        self.o.push('\n');
+    }
+
+    fn ints(&mut self, label: &str, n: usize, data: &[i32]) {
+        if n == 0 {
+            return;
+        }
+        let _ = write!(self.o, "{label}\n  ");
+        for &v in &data[..n] {
+            let _ = write!(self.o, "{v} ");
+            self.o.push_str("\n  ");
+        }
+        self.o.push('\n');
+    }
+
+    fn sparse(
+        &mut self,
+        label: &str,
+        mat: &[f64],
+        nr: usize,
+        rownnz: &[i32],
+        rowadr: &[i32],
+        colind: &[i32],
+    ) {
+        let _ = write!(self.o, "{label}\n  ");
+        for r in 0..nr {
+            let adr = rowadr[r].max(0) as usize;
+            for k in adr..adr + rownnz[r].max(0) as usize {
+                let _ = write!(self.o, "{}: ", colind[k]);
+                self.fmt.real(&mut self.o, mat[k]);
+                self.o.push_str("  ");
+            }
+            self.o.push_str("\n  ");
+        }
+        self.o.push('\n');
+    }
+
+    fn vector(&mut self, label: &str, data: &[f64]) {
+        self.o.push_str(label);
+        for &v in data {
+            self.fmt.real(&mut self.o, v);
+            self.o.push(' ');
+        }
+        self.o.push('\n');
+    }
+}
+
+/// The whole `mj_printData` dump as text.
+pub fn data_text(mv: Model, d: &view::Data, fmt: &NumberFormat) -> String {
+    let m = mv.raw;
+    let h = &*d.raw;
+    let mut p = DataPrinter {
+        o: String::new(),
+        fmt,
+    };
+    p.o.push_str("SIZES\n");
+    for (n, v) in [
+        ("nstack", h.nstack),
+        ("nbuffer", h.nbuffer),
+        ("pstack", h.pstack),
+        ("maxuse_stack", h.maxuse_stack),
+        ("maxuse_con", h.maxuse_con),
+        ("maxuse_efc", h.maxuse_efc),
+        ("solver_iter", h.solver_iter),
+        ("solver_nnz", h.solver_nnz),
+        ("ne", h.ne),
+        ("nf", h.nf),
+        ("nefc", h.nefc),
+        ("ncon", h.ncon),
+    ] {
+        p.o.push_str("  ");
+        name(&mut p.o, n);
+        let _ = writeln!(p.o, " {v}");
+    }
+    p.o.push('\n');
+    if h.warning.iter().map(|w| w.number).sum::<i32>() != 0 {
+        p.o.push_str("WARNING\n");
+        for (i, w) in h.warning.iter().enumerate() {
+            if w.number != 0 {
+                let _ = writeln!(
+                    p.o,
+                    "    {i}:  lastinfo = {}   number = {}",
+                    w.lastinfo, w.number
+                );
+            }
+        }
+        p.o.push('\n');
+    }
+    if h.timer.iter().map(|t| t.duration).sum::<f64>() != 0.0 {
+        p.o.push_str("TIMER\n");
+        for (i, t) in h.timer.iter().enumerate() {
+            let _ = write!(p.o, "    {i}:  duration = ");
+            fmt.real(&mut p.o, t.duration);
+            let _ = writeln!(p.o, "   number = {}", t.number);
+        }
+        p.o.push('\n');
+    }
+    if h.solver_iter != 0 {
+        p.o.push_str("SOLVER STAT\n");
+        let _ = writeln!(p.o, "  solver_iter = {}", h.solver_iter);
+        let _ = writeln!(p.o, "  solver_nnz = {}", h.solver_nnz);
+        for (i, s) in h
+            .solver
+            .iter()
+            .take(h.solver_iter.max(0) as usize)
+            .enumerate()
+        {
+            let _ = write!(p.o, "    {i}:  improvement = ");
+            fmt.real(&mut p.o, s.improvement);
+            p.o.push_str("  gradient = ");
+            fmt.real(&mut p.o, s.gradient);
+            p.o.push_str("  lineslope = ");
+            fmt.real(&mut p.o, s.lineslope);
+            p.o.push('\n');
+            let _ = writeln!(
+                p.o,
+                "        nactive = {}   nchange = {}   neval = {}   nupdate = {}",
+                s.nactive, s.nchange, s.neval, s.nupdate
+            );
+        }
+        p.vector("solver_fwdinv = ", &h.solver_fwdinv);
+        p.o.push('\n');
+    }
+    p.vector("ENERGY = ", &h.energy);
+    p.o.push('\n');
+    p.o.push_str("TIME = ");
+    fmt.real(&mut p.o, h.time);
+    p.o.push_str("\n\n");
+
+    let (nq, nv, na, nu, nbody) = (
+        m.nq as usize,
+        m.nv as usize,
+        m.na as usize,
+        m.nu as usize,
+        m.nbody as usize,
+    );
+    let (njnt, ngeom, nsite, ncam, nlight) = (
+        m.njnt as usize,
+        m.ngeom as usize,
+        m.nsite as usize,
+        m.ncam as usize,
+        m.nlight as usize,
+    );
+    let (ntendon, nmocap, nefc) = (
+        m.ntendon as usize,
+        m.nmocap as usize,
+        h.nefc.max(0) as usize,
+    );
+    p.array("QPOS", nq, 1, d.qpos);
+    p.array("QVEL", nv, 1, d.qvel);
+    p.array("ACT", na, 1, d.act);
+    p.array("QACC_WARMSTART", nv, 1, d.qacc_warmstart);
+    p.array("CTRL", nu, 1, d.ctrl);
+    p.array("QFRC_APPLIED", nv, 1, d.qfrc_applied);
+    p.array("XFRC_APPLIED", nbody, 6, d.xfrc_applied);
+    p.array("MOCAP_POS", nmocap, 3, d.mocap_pos);
+    p.array("MOCAP_QUAT", nmocap, 4, d.mocap_quat);
+    p.array("QACC", nv, 1, d.qacc);
+    p.array("ACT_DOT", na, 1, d.act_dot);
+    p.array("USERDATA", m.nuserdata as usize, 1, d.userdata);
+    p.array("SENSOR", m.nsensordata as usize, 1, d.sensordata);
+    p.array("XPOS", nbody, 3, d.xpos);
+    p.array("XQUAT", nbody, 4, d.xquat);
+    p.array("XMAT", nbody, 9, d.xmat);
+    p.array("XIPOS", nbody, 3, d.xipos);
+    p.array("XIMAT", nbody, 9, d.ximat);
+    p.array("XANCHOR", njnt, 3, d.xanchor);
+    p.array("XAXIS", njnt, 3, d.xaxis);
+    p.array("GEOM_XPOS", ngeom, 3, d.geom_xpos);
+    p.array("GEOM_XMAT", ngeom, 9, d.geom_xmat);
+    p.array("SITE_XPOS", nsite, 3, d.site_xpos);
+    p.array("SITE_XMAT", nsite, 9, d.site_xmat);
+    p.array("CAM_XPOS", ncam, 3, d.cam_xpos);
+    p.array("CAM_XMAT", ncam, 9, d.cam_xmat);
+    p.array("LIGHT_XPOS", nlight, 3, d.light_xpos);
+    p.array("LIGHT_XDIR", nlight, 3, d.light_xdir);
+    p.array("SUBTREE_COM", nbody, 3, d.subtree_com);
+    p.array("CDOF", nv, 6, d.cdof);
+    p.array("CINERT", nbody, 10, d.cinert);
+    p.array("TEN_LENGTH", ntendon, 1, d.ten_length);
+    let sparse = is_sparse(m);
+    if !sparse {
+        p.array("TEN_MOMENT", ntendon, nv, d.ten_J);
+    } else {
+        p.ints("TEN_J_ROWNNZ", ntendon, d.ten_J_rownnz);
+        p.ints("TEN_J_ROWADR", ntendon, d.ten_J_rowadr);
+        p.sparse(
+            "TEN_J",
+            d.ten_J,
+            ntendon,
+            d.ten_J_rownnz,
+            d.ten_J_rowadr,
+            d.ten_J_colind,
+        );
+    }
+    for i in 0..ntendon {
+        let num = d.ten_wrapnum[i].max(0) as usize;
+        let _ = writeln!(p.o, "TENDON {i}: {num} wrap points");
+        let adr = d.ten_wrapadr[i].max(0) as usize;
+        for j in adr..adr + num {
+            let _ = write!(p.o, "    {}:  ", d.wrap_obj[j]);
+            p.vector("", &d.wrap_xpos[3 * j..3 * j + 3]);
+        }
+        p.o.push('\n');
+    }
+    p.array("ACTUATOR_LENGTH", nu, 1, d.actuator_length);
+    p.array("ACTUATOR_MOMENT", nu, nv, d.actuator_moment);
+    p.array("CRB", nbody, 10, d.crb);
+    p.array("QM", nv, nv, &tree_to_dense(mv, d.qM));
+    p.array("QLD", nv, nv, &tree_to_dense(mv, d.qLD));
+    p.array("QLDIAGINV", nv, 1, d.qLDiagInv);
+    p.array("QLDIAGSQRTINV", nv, 1, d.qLDiagSqrtInv);
+    for (label, v) in [
+        ("D_rownnz", &d.D_rownnz[..nv]),
+        ("D_rowadr", &d.D_rowadr[..nv]),
+        ("D_colind", &d.D_colind[..]),
+    ] {
+        name(&mut p.o, label);
+        for x in v {
+            let _ = write!(p.o, "{x} ");
+        }
+        p.o.push_str("\n\n");
+    }
+    let qderiv = rows_to_dense(d.qDeriv, nv, nv, d.D_rownnz, d.D_rowadr, d.D_colind);
+    p.array("QDERIV", nv, nv, &qderiv);
+    let qlu = rows_to_dense(d.qLU, nv, nv, d.D_rownnz, d.D_rowadr, d.D_colind);
+    p.array("QLU", nv, nv, &qlu);
+    p.o.push_str("CONTACT\n");
+    for (i, c) in d.contact.iter().take(h.ncon.max(0) as usize).enumerate() {
+        let _ = write!(
+            p.o,
+            "  {i}:\n     dim           {}\n     geom          {} {}\n",
+            c.dim, c.geom1, c.geom2
+        );
+        let _ = write!(
+            p.o,
+            "     exclude       {}\n     efc_address   {}\n",
+            c.exclude, c.efc_address
+        );
+        p.vector("     solref       ", &c.solref);
+        p.vector("     solimp       ", &c.solimp);
+        p.vector("     dist         ", &[c.dist]);
+        p.vector("     includemargin", &[c.includemargin]);
+        p.vector("     pos          ", &c.pos);
+        p.vector("     frame        ", &c.frame);
+        p.vector("     friction     ", &c.friction);
+        p.vector("     mu           ", &[c.mu]);
+    }
+    if h.ncon > 0 {
+        p.o.push('\n');
+    }
+    p.ints("EFC_TYPE", nefc, d.efc_type);
+    p.ints("EFC_ID", nefc, d.efc_id);
+    if !sparse {
+        p.array("EFC_J", nefc, nv, d.efc_J);
+        p.array("EFC_AR", nefc, nefc, d.efc_AR);
+    } else {
+        p.ints("EFC_J_ROWNNZ", nefc, d.efc_J_rownnz);
+        p.ints("EFC_J_ROWADR", nefc, d.efc_J_rowadr);
+        p.sparse(
+            "EFC_J",
+            d.efc_J,
+            nefc,
+            d.efc_J_rownnz,
+            d.efc_J_rowadr,
+            d.efc_J_colind,
+        );
+        p.ints("EFC_AR_ROWNNZ", nefc, d.efc_AR_rownnz);
+        p.ints("EFC_AR_ROWADR", nefc, d.efc_AR_rowadr);
+        p.sparse(
+            "EFC_AR",
+            d.efc_AR,
+            nefc,
+            d.efc_AR_rownnz,
+            d.efc_AR_rowadr,
+            d.efc_AR_colind,
+        );
+    }
+    p.array("EFC_POS", nefc, 1, d.efc_pos);
+    p.array("EFC_MARGIN", nefc, 1, d.efc_margin);
+    p.array("EFC_FRICTIONLOSS", nefc, 1, d.efc_frictionloss);
+    p.array("EFC_DIAGAPPROX", nefc, 1, d.efc_diagApprox);
+    p.array("EFC_KBIP", nefc, 4, d.efc_KBIP);
+    p.array("EFC_D", nefc, 1, d.efc_D);
+    p.array("EFC_R", nefc, 1, d.efc_R);
+    p.array("TEN_VELOCITY", ntendon, 1, d.ten_velocity);
+    p.array("ACTUATOR_VELOCITY", nu, 1, d.actuator_velocity);
+    p.array("CVEL", nbody, 6, d.cvel);
+    p.array("CDOF_DOT", nv, 6, d.cdof_dot);
+    p.array("QFRC_BIAS", nv, 1, d.qfrc_bias);
+    p.array("QFRC_PASSIVE", nv, 1, d.qfrc_passive);
+    p.array("EFC_VEL", nefc, 1, d.efc_vel);
+    p.array("EFC_AREF", nefc, 1, d.efc_aref);
+    p.array("SUBTREE_LINVEL", nbody, 3, d.subtree_linvel);
+    p.array("SUBTREE_ANGMOM", nbody, 3, d.subtree_angmom);
+    p.array("ACTUATOR_FORCE", nu, 1, d.actuator_force);
+    p.array("QFRC_ACTUATOR", nv, 1, d.qfrc_actuator);
+    p.array("QFRC_SMOOTH", nv, 1, d.qfrc_smooth);
+    p.array("QACC_SMOOTH", nv, 1, d.qacc_smooth);
+    p.array("EFC_B", nefc, 1, d.efc_b);
+    p.array("EFC_FORCE", nefc, 1, d.efc_force);
+    p.ints("EFC_STATE", nefc, d.efc_state);
+    p.array("QFRC_CONSTRAINT", nv, 1, d.qfrc_constraint);
+    p.array("QFRC_INVERSE", nv, 1, d.qfrc_inverse);
+    p.array("CACC", nbody, 6, d.cacc);
+    p.array("CFRC_INT", nbody, 6, d.cfrc_int);
+    p.array("CFRC_EXT", nbody, 6, d.cfrc_ext);
+    p.o
+}

@@ -82,16 +82,6 @@ pub unsafe extern "C" fn mj_setLengthRange(m: *mut mjModel, d: *mut mjData, inde
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_printFormattedData(m: *const mjModel, d: *mut mjData, filename: *const c_char, float_format: *const c_char) {
-    pending("mj_printFormattedData");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_printData(m: *const mjModel, d: *mut mjData, filename: *const c_char) {
-    pending("mj_printData");
-}
-
-#[no_mangle]
 pub unsafe extern "C" fn mj_fwdPosition(m: *const mjModel, d: *mut mjData) {
     pending("mj_fwdPosition");
 }

@@ -56,3 +56,46 @@ pub unsafe extern "C" fn mj_printModel(m: *const mjModel, filename: *const c_cha
     let f = std::ffi::CString::new(FLOAT_FORMAT).unwrap();
     mj_printFormattedModel(m, filename, f.as_ptr());
 }
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_printFormattedData(
+    m: *const mjModel,
+    d: *mut mjData,
+    filename: *const c_char,
+    float_format: *const c_char,
+) {
+    let (Some(m), Some(d)) = (m.as_ref(), d.as_mut()) else {
+        return;
+    };
+    let fmt = number_format(float_format);
+    if d.pstack != 0 {
+        super::errmem::error("Attempting to print mjData when stack is in use");
+        return;
+    }
+    // 2.2.2 takes nv*nv of stack for its dense matrices before printing the sizes.
+    let scratch = m.nv.saturating_mul(m.nv);
+    if scratch > d.nstack {
+        super::errmem::error("Stack overflow");
+        return;
+    }
+    d.pstack = scratch;
+    d.maxuse_stack = d.maxuse_stack.max(scratch);
+    let text = super::guard("mj_printData", None, || {
+        let dv = view::Data::new(m, &mut *d);
+        Ok(Some(crate::abi::print::data_text(
+            view::Model::new(m),
+            &dv,
+            &fmt,
+        )))
+    });
+    d.pstack = 0;
+    if let Some(text) = text {
+        emit(filename, &text, "mjModel");
+    }
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_printData(m: *const mjModel, d: *mut mjData, filename: *const c_char) {
+    let f = std::ffi::CString::new(FLOAT_FORMAT).unwrap();
+    mj_printFormattedData(m, d, filename, f.as_ptr());
+}

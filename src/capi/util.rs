@@ -58,13 +58,7 @@ unsafe fn sl_mut<'a, T>(p: *mut T, n: usize) -> &'a mut [T] {
 }
 
 /// Input `p[..n]`, copied into `buf` when it overlaps the output `res[..rn]`.
-unsafe fn input(
-    p: *const f64,
-    n: usize,
-    res: *const f64,
-    rn: usize,
-    buf: &mut Vec<f64>,
-) -> &[f64] {
+unsafe fn input(p: *const f64, n: usize, res: *const f64, rn: usize, buf: &mut Vec<f64>) -> &[f64] {
     let (a, b) = (p as usize, res as usize);
     let size = std::mem::size_of::<f64>();
     if n > 0 && rn > 0 && a < b + rn * size && b < a + n * size {
