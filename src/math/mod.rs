@@ -3,10 +3,16 @@
 //! Everything here reproduces the arithmetic of MuJoCo 2.2.2 operation by operation,
 //! so that results agree bit for bit with the reference.
 
+pub mod blas;
+pub mod chol;
+pub mod eig3;
+pub mod misc;
+pub mod qcqp;
 pub mod quat;
 pub mod spatial;
 pub mod vec3;
 
+pub use eig3::{eig3, Eig3};
 pub use quat::*;
 pub use spatial::*;
 pub use vec3::*;

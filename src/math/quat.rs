@@ -201,9 +201,9 @@ fn normvec4_user(q: &mut Quat) {
 /// lowercase letters are moving axes (post-multiply), uppercase fixed axes (pre-multiply).
 pub fn euler2quat(angles: &Vec3, seq: &[u8]) -> Result<Quat, &'static str> {
     let mut q = unit_quat();
-    for i in 0..3 {
+    for (i, angle) in angles.iter().enumerate() {
         let c = seq.get(i).copied().unwrap_or(0);
-        let half = angles[i] / 2.0;
+        let half = angle / 2.0;
         let mut rot = [half.cos(), 0.0, 0.0, 0.0];
         let s = half.sin();
         match c {

@@ -108,8 +108,8 @@ pub fn mul_mat3_t(a: &Mat3, b: &Mat3) -> Mat3 {
     let mut r = [0.0; 9];
     for i in 0..3 {
         for j in 0..3 {
-            r[3 * i + j] =
-                0.0 + (a[3 * i] * b[3 * j] + a[3 * i + 1] * b[3 * j + 1] + a[3 * i + 2] * b[3 * j + 2]);
+            r[3 * i + j] = 0.0
+                + (a[3 * i] * b[3 * j] + a[3 * i + 1] * b[3 * j + 1] + a[3 * i + 2] * b[3 * j + 2]);
         }
     }
     r
