@@ -22,8 +22,8 @@ pub fn fwd_actuation(m: &Model, d: &mut Data) -> Result<(), EngineError> {
         let ctrl = a.alloc(nu)?;
         let noclamp = disabled(m, mjtDisableBit_::mjDSBL_CLAMPCTRL);
         for i in 0..nu {
-            ctrl[i] = if !noclamp && m.actuator_ctrllimited[i] != 0 {
-                clip(d.ctrl[i], m.actuator_ctrlrange[2 * i], m.actuator_ctrlrange[2 * i + 1])
+            ctrl[i] = if !noclamp && m.actuator_ctrllimited()[i] != 0 {
+                clip(d.ctrl[i], m.actuator_ctrlrange()[2 * i], m.actuator_ctrlrange()[2 * i + 1])
             } else {
                 d.ctrl[i]
             };
@@ -37,20 +37,20 @@ pub fn fwd_actuation(m: &Model, d: &mut Data) -> Result<(), EngineError> {
         }
         let force = &mut *d.actuator_force;
         for i in 0..nu {
-            let prm = &m.actuator_gainprm[mjNGAIN * i..mjNGAIN * (i + 1)];
+            let prm = &m.actuator_gainprm()[mjNGAIN * i..mjNGAIN * (i + 1)];
             let len = d.actuator_length[i];
             let vel = d.actuator_velocity[i];
-            let gain = match m.actuator_gaintype[i] {
+            let gain = match m.actuator_gaintype()[i] {
                 x if x == mjtGain_::mjGAIN_FIXED as i32 => prm[0],
                 x if x == mjtGain_::mjGAIN_AFFINE as i32 => prm[0] + prm[1] * len + prm[2] * vel,
                 x => return Err(not_implemented(&format!("actuator gain type {x} is"))),
             };
-            if m.actuator_dyntype[i] != mjtDyn_::mjDYN_NONE as i32 {
+            if m.actuator_dyntype()[i] != mjtDyn_::mjDYN_NONE as i32 {
                 return Err(not_implemented("actuator dynamics are"));
             }
             force[i] = gain * ctrl[i];
-            let prm = &m.actuator_biasprm[mjNBIAS * i..mjNBIAS * (i + 1)];
-            let bias = match m.actuator_biastype[i] {
+            let prm = &m.actuator_biasprm()[mjNBIAS * i..mjNBIAS * (i + 1)];
+            let bias = match m.actuator_biastype()[i] {
                 x if x == mjtBias_::mjBIAS_NONE as i32 => 0.0,
                 x if x == mjtBias_::mjBIAS_AFFINE as i32 => prm[0] + prm[1] * len + prm[2] * vel,
                 x => return Err(not_implemented(&format!("actuator bias type {x} is"))),
@@ -58,8 +58,8 @@ pub fn fwd_actuation(m: &Model, d: &mut Data) -> Result<(), EngineError> {
             force[i] += bias;
         }
         for i in 0..nu {
-            if m.actuator_forcelimited[i] != 0 {
-                force[i] = clip(force[i], m.actuator_forcerange[2 * i], m.actuator_forcerange[2 * i + 1]);
+            if m.actuator_forcelimited()[i] != 0 {
+                force[i] = clip(force[i], m.actuator_forcerange()[2 * i], m.actuator_forcerange()[2 * i + 1]);
             }
         }
         mul_mat_t_vec(d.qfrc_actuator, d.actuator_moment, force, nu, nv);

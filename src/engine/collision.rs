@@ -32,20 +32,20 @@ fn plane_dist(d: &Data, plane: usize, g: usize) -> f64 {
 
 /// Runs the filters of mj_collideGeoms; Err when the pair reaches the narrow phase.
 fn test_pair(m: &Model, d: &Data, g1: usize, g2: usize, pair: Option<usize>) -> Result<(), EngineError> {
-    let (g1, g2) = if m.geom_type[g1] > m.geom_type[g2] { (g2, g1) } else { (g1, g2) };
-    let (t1, t2) = (m.geom_type[g1], m.geom_type[g2]);
+    let (g1, g2) = if m.geom_type()[g1] > m.geom_type()[g2] { (g2, g1) } else { (g1, g2) };
+    let (t1, t2) = (m.geom_type()[g1], m.geom_type()[g2]);
     if !has_collider(t1, t2) {
         return Ok(());
     }
     let margin = match pair {
         None => {
-            let weld1 = m.body_weldid[m.geom_bodyid[g1] as usize];
-            let weld2 = m.body_weldid[m.geom_bodyid[g2] as usize];
-            let wparent1 = m.body_weldid[m.body_parentid[weld1 as usize] as usize];
-            let wparent2 = m.body_weldid[m.body_parentid[weld2 as usize] as usize];
+            let weld1 = m.body_weldid()[m.geom_bodyid()[g1] as usize];
+            let weld2 = m.body_weldid()[m.geom_bodyid()[g2] as usize];
+            let wparent1 = m.body_weldid()[m.body_parentid()[weld1 as usize] as usize];
+            let wparent2 = m.body_weldid()[m.body_parentid()[weld2 as usize] as usize];
             let filterparent = !disabled(m, mjtDisableBit_::mjDSBL_FILTERPARENT) && weld1 != 0 && weld2 != 0;
-            let (ct1, ca1) = (m.geom_contype[g1], m.geom_conaffinity[g1]);
-            let (ct2, ca2) = (m.geom_contype[g2], m.geom_conaffinity[g2]);
+            let (ct1, ca1) = (m.geom_contype()[g1], m.geom_conaffinity()[g1]);
+            let (ct2, ca2) = (m.geom_contype()[g2], m.geom_conaffinity()[g2]);
             if (ct1 & ca2) == 0 && (ct2 & ca1) == 0 {
                 return Ok(());
             }
@@ -55,12 +55,12 @@ fn test_pair(m: &Model, d: &Data, g1: usize, g2: usize, pair: Option<usize>) -> 
             if filterparent && (weld1 == wparent2 || weld2 == wparent1) {
                 return Ok(());
             }
-            max(m.geom_margin[g1], m.geom_margin[g2])
+            max(m.geom_margin()[g1], m.geom_margin()[g2])
         }
-        Some(p) => m.pair_margin[p],
+        Some(p) => m.pair_margin()[p],
     };
     let margin = assign_margin(m, margin);
-    let (r1, r2) = (m.geom_rbound[g1], m.geom_rbound[g2]);
+    let (r1, r2) = (m.geom_rbound()[g1], m.geom_rbound()[g2]);
     if r1 > 0.0 && r2 > 0.0 && dist3(&row(d.geom_xpos, g1), &row(d.geom_xpos, g2)) > r1 + r2 + margin {
         return Ok(());
     }
@@ -80,7 +80,7 @@ fn test_pair(m: &Model, d: &Data, g1: usize, g2: usize, pair: Option<usize>) -> 
 }
 
 fn can_collide(m: &Model, g: usize) -> bool {
-    m.geom_contype[g] != 0 || m.geom_conaffinity[g] != 0
+    m.geom_contype()[g] != 0 || m.geom_conaffinity()[g] != 0
 }
 
 /// mj_collision: ncon = 0, or an error when a contact could occur.
@@ -99,7 +99,7 @@ pub fn collision(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     let pair_only = mode == mjtCollision_::mjCOL_PAIR as i32;
     if !dynamic_only {
         for p in 0..m.raw.npair as usize {
-            test_pair(m, d, m.pair_geom1[p] as usize, m.pair_geom2[p] as usize, Some(p))?;
+            test_pair(m, d, m.pair_geom1()[p] as usize, m.pair_geom2()[p] as usize, Some(p))?;
         }
     }
     if pair_only {
@@ -114,20 +114,20 @@ pub fn collision(m: &Model, d: &mut Data) -> Result<(), EngineError> {
             if !can_collide(m, g2) {
                 continue;
             }
-            let (b1, b2) = (m.geom_bodyid[g1], m.geom_bodyid[g2]);
+            let (b1, b2) = (m.geom_bodyid()[g1], m.geom_bodyid()[g2]);
             if b1 == b2 {
                 continue;
             }
             let (lo, hi) = if b1 < b2 { (b1, b2) } else { (b2, b1) };
             let signature = ((lo + 1) << 16) + (hi + 1);
-            if m.exclude_signature.contains(&signature) {
+            if m.exclude_signature().contains(&signature) {
                 continue;
             }
             let merged = !dynamic_only
                 && (0..m.raw.npair as usize).any(|p| {
-                    m.pair_signature[p] == signature
-                        && ((m.pair_geom1[p] as usize == g1 && m.pair_geom2[p] as usize == g2)
-                            || (m.pair_geom1[p] as usize == g2 && m.pair_geom2[p] as usize == g1))
+                    m.pair_signature()[p] == signature
+                        && ((m.pair_geom1()[p] as usize == g1 && m.pair_geom2()[p] as usize == g2)
+                            || (m.pair_geom1()[p] as usize == g2 && m.pair_geom2()[p] as usize == g1))
                 });
             if merged {
                 continue;

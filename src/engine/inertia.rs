@@ -12,7 +12,7 @@ pub fn crb(m: &Model, d: &mut Data, skipsimple: bool) {
     let nv = m.raw.nv as usize;
     d.crb.copy_from_slice(d.cinert);
     for i in (1..nbody).rev() {
-        let p = m.body_parentid[i] as usize;
+        let p = m.body_parentid()[i] as usize;
         if p > 0 {
             let (lo, hi) = d.crb.split_at_mut(10 * i);
             add_to(&mut lo[10 * p..10 * p + 10], &hi[..10]);
@@ -20,19 +20,19 @@ pub fn crb(m: &Model, d: &mut Data, skipsimple: bool) {
     }
     d.qM.fill(0.0);
     for i in (0..nv).rev() {
-        let mut adr = m.dof_Madr[i] as usize;
-        if skipsimple && m.dof_simplenum[i] != 0 {
-            d.qM[adr] = m.dof_M0[i];
+        let mut adr = m.dof_Madr()[i] as usize;
+        if skipsimple && m.dof_simplenum()[i] != 0 {
+            d.qM[adr] = m.dof_M0()[i];
             continue;
         }
-        d.qM[adr] = m.dof_armature[i];
-        let b = m.dof_bodyid[i] as usize;
+        d.qM[adr] = m.dof_armature()[i];
+        let b = m.dof_bodyid()[i] as usize;
         let tmp = mul_inert_vec(&d.crb[10 * b..10 * b + 10], &row(d.cdof, i));
         let mut j = i as i32;
         while j >= 0 {
             let ju = j as usize;
             d.qM[adr] += dot(&d.cdof[6 * ju..6 * ju + 6], &tmp);
-            j = m.dof_parentid[ju];
+            j = m.dof_parentid()[ju];
             adr += 1;
         }
     }
@@ -48,7 +48,7 @@ pub fn factor_i(
     sqrt_inv: Option<&mut [f64]>,
 ) -> Result<(), EngineError> {
     let nv = m.raw.nv as usize;
-    let madr = m.dof_Madr;
+    let madr = m.dof_Madr();
     qld.copy_from_slice(&mat[..qld.len()]);
     for k in (0..nv).rev() {
         let akk = madr[k] as usize;
@@ -56,11 +56,11 @@ pub fn factor_i(
             warning(raw, mjtWarning_::mjWARN_INERTIA as i32, k as i32)?;
             qld[akk] = MINVAL;
         }
-        if m.dof_simplenum[k] != 0 {
+        if m.dof_simplenum()[k] != 0 {
             continue;
         }
         let mut aki = akk + 1;
-        let mut i = m.dof_parentid[k];
+        let mut i = m.dof_parentid()[k];
         while i >= 0 {
             let iu = i as usize;
             let tmp = qld[aki] / qld[akk];
@@ -71,7 +71,7 @@ pub fn factor_i(
                 qld[ai + t] += qld[aki + t] * s;
             }
             qld[aki] = tmp;
-            i = m.dof_parentid[iu];
+            i = m.dof_parentid()[iu];
             aki += 1;
         }
     }
@@ -96,14 +96,14 @@ fn solve_ld1(m: &Model, x: &mut [f64], qld: &[f64], diag_inv: &[f64]) {
     let nv = m.raw.nv as usize;
     for i in (0..nv).rev() {
         let tmp = x[i];
-        if m.dof_simplenum[i] == 0 && tmp != 0.0 {
-            let mut adr = m.dof_Madr[i] as usize + 1;
-            let mut j = m.dof_parentid[i];
+        if m.dof_simplenum()[i] == 0 && tmp != 0.0 {
+            let mut adr = m.dof_Madr()[i] as usize + 1;
+            let mut j = m.dof_parentid()[i];
             while j >= 0 {
                 let ju = j as usize;
                 x[ju] -= qld[adr] * tmp;
                 adr += 1;
-                j = m.dof_parentid[ju];
+                j = m.dof_parentid()[ju];
             }
         }
     }
@@ -111,15 +111,15 @@ fn solve_ld1(m: &Model, x: &mut [f64], qld: &[f64], diag_inv: &[f64]) {
         x[i] *= diag_inv[i];
     }
     for i in 0..nv {
-        if m.dof_simplenum[i] == 0 {
-            let mut adr = m.dof_Madr[i] as usize + 1;
-            let mut j = m.dof_parentid[i];
+        if m.dof_simplenum()[i] == 0 {
+            let mut adr = m.dof_Madr()[i] as usize + 1;
+            let mut j = m.dof_parentid()[i];
             let mut tmp = x[i];
             while j >= 0 {
                 let ju = j as usize;
                 tmp -= qld[adr] * x[ju];
                 adr += 1;
-                j = m.dof_parentid[ju];
+                j = m.dof_parentid()[ju];
             }
             x[i] = tmp;
         }
@@ -145,14 +145,14 @@ pub fn solve_m2(m: &Model, x: &mut [f64], y: &[f64], n: usize, qld: &[f64], sqrt
         let x = &mut x[v * nv..(v + 1) * nv];
         for i in (0..nv).rev() {
             let tmp = x[i];
-            if m.dof_simplenum[i] == 0 && tmp != 0.0 {
-                let mut adr = m.dof_Madr[i] as usize + 1;
-                let mut j = m.dof_parentid[i];
+            if m.dof_simplenum()[i] == 0 && tmp != 0.0 {
+                let mut adr = m.dof_Madr()[i] as usize + 1;
+                let mut j = m.dof_parentid()[i];
                 while j >= 0 {
                     let ju = j as usize;
                     x[ju] -= qld[adr] * tmp;
                     adr += 1;
-                    j = m.dof_parentid[ju];
+                    j = m.dof_parentid()[ju];
                 }
             }
         }

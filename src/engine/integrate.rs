@@ -10,9 +10,9 @@ use crate::math::*;
 /// qpos += qvel*dt on the joint manifold (mj_integratePos).
 pub fn integrate_pos(m: &Model, qpos: &mut [f64], qvel: &[f64], dt: f64) {
     for j in 0..m.raw.njnt as usize {
-        let mut padr = m.jnt_qposadr[j] as usize;
-        let mut vadr = m.jnt_dofadr[j] as usize;
-        match m.jnt_type[j] {
+        let mut padr = m.jnt_qposadr()[j] as usize;
+        let mut vadr = m.jnt_dofadr()[j] as usize;
+        match m.jnt_type()[j] {
             t @ (JNT_FREE | JNT_BALL) => {
                 if t == JNT_FREE {
                     for i in 0..3 {
@@ -33,9 +33,9 @@ pub fn integrate_pos(m: &Model, qpos: &mut [f64], qvel: &[f64], dt: f64) {
 /// Velocity that moves qpos1 to qpos2 in time dt (mj_differentiatePos).
 pub fn differentiate_pos(m: &Model, qvel: &mut [f64], dt: f64, qpos1: &[f64], qpos2: &[f64]) {
     for j in 0..m.raw.njnt as usize {
-        let mut padr = m.jnt_qposadr[j] as usize;
-        let mut vadr = m.jnt_dofadr[j] as usize;
-        match m.jnt_type[j] {
+        let mut padr = m.jnt_qposadr()[j] as usize;
+        let mut vadr = m.jnt_dofadr()[j] as usize;
+        match m.jnt_type()[j] {
             t @ (JNT_FREE | JNT_BALL) => {
                 if t == JNT_FREE {
                     for i in 0..3 {
@@ -62,8 +62,8 @@ fn advance(m: &Model, d: &mut Data, act_dot: &[f64], qacc: &[f64], qvel: Option<
         add_to_scl(d.act, act_dot, h);
         for i in 0..na {
             let iu = i + nu - na;
-            if m.actuator_actlimited[iu] != 0 {
-                d.act[i] = clip(d.act[i], m.actuator_actrange[2 * iu], m.actuator_actrange[2 * iu + 1]);
+            if m.actuator_actlimited()[iu] != 0 {
+                d.act[i] = clip(d.act[i], m.actuator_actrange()[2 * iu], m.actuator_actrange()[2 * iu + 1]);
             }
         }
     }
@@ -80,7 +80,7 @@ pub fn euler(m: &Model, d: &mut Data, skipfactor: bool) -> Result<(), EngineErro
     let nv = m.raw.nv as usize;
     let nm = m.raw.nM as usize;
     let qacc = d.arena.alloc(nv)?;
-    if !m.dof_damping.iter().any(|&b| b > 0.0) {
+    if !m.dof_damping().iter().any(|&b| b > 0.0) {
         qacc.copy_from_slice(d.qacc);
     } else {
         if !skipfactor {
@@ -88,7 +88,7 @@ pub fn euler(m: &Model, d: &mut Data, skipfactor: bool) -> Result<(), EngineErro
             mhb.copy_from_slice(d.qM);
             let h = m.raw.opt.timestep;
             for i in 0..nv {
-                mhb[m.dof_Madr[i] as usize] += h * m.dof_damping[i];
+                mhb[m.dof_Madr()[i] as usize] += h * m.dof_damping()[i];
             }
             factor_i(m, d.raw, mhb, d.qH, d.qHDiagInv, None)?;
         }

@@ -22,15 +22,15 @@ pub fn jac(
     if let Some(j) = jacr.as_deref_mut() {
         j[..3 * nv].fill(0.0);
     }
-    let offset = sub3(point, &row(subtree_com, m.body_rootid[body] as usize));
+    let offset = sub3(point, &row(subtree_com, m.body_rootid()[body] as usize));
     let mut b = body;
-    while b != 0 && m.body_dofnum[b] == 0 {
-        b = m.body_parentid[b] as usize;
+    while b != 0 && m.body_dofnum()[b] == 0 {
+        b = m.body_parentid()[b] as usize;
     }
     if b == 0 {
         return;
     }
-    let mut da = m.body_dofadr[b] + m.body_dofnum[b] - 1;
+    let mut da = m.body_dofadr()[b] + m.body_dofnum()[b] - 1;
     while da >= 0 {
         let i = da as usize;
         let c = row::<6>(cdof, i);
@@ -45,7 +45,7 @@ pub fn jac(
             j[i + nv] = c[4] + t[1];
             j[i + 2 * nv] = c[5] + t[2];
         }
-        da = m.dof_parentid[i];
+        da = m.dof_parentid()[i];
     }
 }
 
@@ -57,15 +57,15 @@ pub fn jac_subtree_com(m: &Model, d: &mut Data, jacp: &mut [f64], body: usize) -
     d.arena.scope(|a| -> Result<(), EngineError> {
         let jb = a.alloc(3 * nv)?;
         for b in body..nbody {
-            if b > body && (m.body_parentid[b] as usize) < body {
+            if b > body && (m.body_parentid()[b] as usize) < body {
                 break;
             }
             jac(m, d.cdof, d.subtree_com, &row(d.xipos, b), b, Some(&mut *jb), None);
-            add_to_scl(&mut jacp[..3 * nv], jb, m.body_mass[b]);
+            add_to_scl(&mut jacp[..3 * nv], jb, m.body_mass()[b]);
         }
         Ok(())
     })?;
-    let s = 1.0 / m.body_subtreemass[body];
+    let s = 1.0 / m.body_subtreemass()[body];
     for x in &mut jacp[..3 * nv] {
         *x *= s;
     }
@@ -114,7 +114,7 @@ pub fn full_m(m: &Model, dst: &mut [f64], mat: &[f64]) {
             let ju = j as usize;
             dst[i * nv + ju] = mat[adr];
             dst[ju * nv + i] = mat[adr];
-            j = m.dof_parentid[ju];
+            j = m.dof_parentid()[ju];
             adr += 1;
         }
     }
@@ -125,18 +125,18 @@ pub fn mul_m(m: &Model, qm: &[f64], res: &mut [f64], vec: &[f64]) {
     let nv = m.raw.nv as usize;
     res[..nv].fill(0.0);
     for i in 0..nv {
-        let mut adr = m.dof_Madr[i] as usize;
-        if m.dof_simplenum[i] != 0 {
+        let mut adr = m.dof_Madr()[i] as usize;
+        if m.dof_simplenum()[i] != 0 {
             res[i] = qm[adr] * vec[i];
         } else {
             res[i] += qm[adr] * vec[i];
-            let mut j = m.dof_parentid[i];
+            let mut j = m.dof_parentid()[i];
             adr += 1;
             while j >= 0 {
                 let ju = j as usize;
                 res[i] += qm[adr] * vec[ju];
                 res[ju] += qm[adr] * vec[i];
-                j = m.dof_parentid[ju];
+                j = m.dof_parentid()[ju];
                 adr += 1;
             }
         }
@@ -148,17 +148,17 @@ pub fn mul_m2(m: &Model, qld: &[f64], sqrt_inv: &[f64], res: &mut [f64], vec: &[
     let nv = m.raw.nv as usize;
     res[..nv].fill(0.0);
     for i in 0..nv {
-        if m.dof_simplenum[i] != 0 {
+        if m.dof_simplenum()[i] != 0 {
             res[i] = vec[i] / sqrt_inv[i];
         } else {
-            let mut adr = m.dof_Madr[i] as usize;
+            let mut adr = m.dof_Madr()[i] as usize;
             res[i] += vec[i] / sqrt_inv[i];
-            let mut j = m.dof_parentid[i];
+            let mut j = m.dof_parentid()[i];
             adr += 1;
             while j >= 0 {
                 let ju = j as usize;
                 res[i] += qld[adr] * vec[ju];
-                j = m.dof_parentid[ju];
+                j = m.dof_parentid()[ju];
                 adr += 1;
             }
         }
@@ -169,7 +169,7 @@ pub fn mul_m2(m: &Model, qld: &[f64], sqrt_inv: &[f64], res: &mut [f64], vec: &[
 pub fn add_m_dense(m: &Model, qm: &[f64], dst: &mut [f64]) {
     let nv = m.raw.nv as usize;
     for i in 0..nv {
-        let mut adr = m.dof_Madr[i] as usize;
+        let mut adr = m.dof_Madr()[i] as usize;
         let mut j = i as i32;
         while j >= 0 {
             let ju = j as usize;
@@ -177,10 +177,10 @@ pub fn add_m_dense(m: &Model, qm: &[f64], dst: &mut [f64]) {
             if ju < i {
                 dst[ju * nv + i] += qm[adr];
             }
-            if m.dof_simplenum[i] != 0 {
+            if m.dof_simplenum()[i] != 0 {
                 break;
             }
-            j = m.dof_parentid[ju];
+            j = m.dof_parentid()[ju];
             adr += 1;
         }
     }

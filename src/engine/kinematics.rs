@@ -9,10 +9,10 @@ use crate::math::*;
 
 /// Normalizes the quaternions of ball and free joints in a qpos-like vector.
 pub fn normalize_quat(m: &Model, qpos: &mut [f64]) {
-    for j in 0..m.jnt_type.len() {
-        let t = m.jnt_type[j];
+    for j in 0..m.jnt_type().len() {
+        let t = m.jnt_type()[j];
         if t == JNT_BALL || t == JNT_FREE {
-            let adr = m.jnt_qposadr[j] as usize + if t == JNT_FREE { 3 } else { 0 };
+            let adr = m.jnt_qposadr()[j] as usize + if t == JNT_FREE { 3 } else { 0 };
             let q = normalize4(&q4(&qpos[adr..])).0;
             qpos[adr..adr + 4].copy_from_slice(&q);
         }
@@ -36,23 +36,23 @@ pub fn kinematics(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     }
 
     for i in 1..nbody {
-        let jntadr = m.body_jntadr[i];
-        let jntnum = m.body_jntnum[i] as usize;
+        let jntadr = m.body_jntadr()[i];
+        let jntnum = m.body_jntnum()[i] as usize;
         let (mut pos, mut quat);
-        if jntnum == 1 && m.jnt_type[jntadr as usize] == JNT_FREE {
+        if jntnum == 1 && m.jnt_type()[jntadr as usize] == JNT_FREE {
             let jid = jntadr as usize;
-            let qadr = m.jnt_qposadr[jid] as usize;
+            let qadr = m.jnt_qposadr()[jid] as usize;
             pos = v3(&d.qpos[qadr..]);
             quat = q4(&d.qpos[qadr + 3..]);
             put(d.xanchor, jid, &pos);
             put(d.xaxis, jid, &[0.0, 0.0, 1.0]);
         } else {
-            let pid = m.body_parentid[i] as usize;
-            let mocap = m.body_mocapid[i];
+            let pid = m.body_parentid()[i] as usize;
+            let mocap = m.body_mocapid()[i];
             let (bpos, bquat) = if mocap >= 0 {
                 (row::<3>(d.mocap_pos, mocap as usize), row::<4>(d.mocap_quat, mocap as usize))
             } else {
-                (row::<3>(m.body_pos, i), row::<4>(m.body_quat, i))
+                (row::<3>(m.body_pos(), i), row::<4>(m.body_quat(), i))
             };
             let vec = mul_mat_vec3(&row(d.xmat, pid), &bpos);
             pos = add3(&row(d.xpos, pid), &vec);
@@ -60,21 +60,21 @@ pub fn kinematics(m: &Model, d: &mut Data) -> Result<(), EngineError> {
 
             for j in 0..jntnum {
                 let jid = jntadr as usize + j;
-                let qadr = m.jnt_qposadr[jid] as usize;
-                let jtype = m.jnt_type[jid];
-                let jaxis = row::<3>(m.jnt_axis, jid);
-                let jpos = row::<3>(m.jnt_pos, jid);
+                let qadr = m.jnt_qposadr()[jid] as usize;
+                let jtype = m.jnt_type()[jid];
+                let jaxis = row::<3>(m.jnt_axis(), jid);
+                let jpos = row::<3>(m.jnt_pos(), jid);
                 let xaxis = rot_vec_quat(&jaxis, &quat);
                 let xanchor = add3(&rot_vec_quat(&jpos, &quat), &pos);
                 match jtype {
                     JNT_SLIDE => {
-                        add_to_scl3(&mut pos, &xaxis, d.qpos[qadr] - m.qpos0[qadr]);
+                        add_to_scl3(&mut pos, &xaxis, d.qpos[qadr] - m.qpos0()[qadr]);
                     }
                     JNT_BALL | JNT_HINGE => {
                         let qloc = if jtype == JNT_BALL {
                             q4(&d.qpos[qadr..])
                         } else {
-                            axis_angle2quat(&jaxis, d.qpos[qadr] - m.qpos0[qadr])
+                            axis_angle2quat(&jaxis, d.qpos[qadr] - m.qpos0()[qadr])
                         };
                         quat = mul_quat(&quat, &qloc);
                         let vec = sub3(&xanchor, &pos);
@@ -96,19 +96,19 @@ pub fn kinematics(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     }
 
     for i in 1..nbody {
-        let (p, r) = local_to_global(d, &row(m.body_ipos, i), &row(m.body_iquat, i), i, m.body_sameframe[i]);
+        let (p, r) = local_to_global(d, &row(m.body_ipos(), i), &row(m.body_iquat(), i), i, m.body_sameframe()[i]);
         put(d.xipos, i, &p);
         put(d.ximat, i, &r);
     }
     for i in 0..m.raw.ngeom as usize {
-        let b = m.geom_bodyid[i] as usize;
-        let (p, r) = local_to_global(d, &row(m.geom_pos, i), &row(m.geom_quat, i), b, m.geom_sameframe[i]);
+        let b = m.geom_bodyid()[i] as usize;
+        let (p, r) = local_to_global(d, &row(m.geom_pos(), i), &row(m.geom_quat(), i), b, m.geom_sameframe()[i]);
         put(d.geom_xpos, i, &p);
         put(d.geom_xmat, i, &r);
     }
     for i in 0..m.raw.nsite as usize {
-        let b = m.site_bodyid[i] as usize;
-        let (p, r) = local_to_global(d, &row(m.site_pos, i), &row(m.site_quat, i), b, m.site_sameframe[i]);
+        let b = m.site_bodyid()[i] as usize;
+        let (p, r) = local_to_global(d, &row(m.site_pos(), i), &row(m.site_quat(), i), b, m.site_sameframe()[i]);
         put(d.site_xpos, i, &p);
         put(d.site_xmat, i, &r);
     }
@@ -123,11 +123,11 @@ pub fn com_pos(m: &Model, d: &mut Data) -> Result<(), EngineError> {
         let mass = a.alloc(nbody)?;
         for i in (0..nbody).rev() {
             let mut c = row::<3>(d.subtree_com, i);
-            add_to_scl3(&mut c, &row(d.xipos, i), m.body_mass[i]);
-            mass[i] += m.body_mass[i];
+            add_to_scl3(&mut c, &row(d.xipos, i), m.body_mass()[i]);
+            mass[i] += m.body_mass()[i];
             put(d.subtree_com, i, &c);
             if i > 0 {
-                let p = m.body_parentid[i] as usize;
+                let p = m.body_parentid()[i] as usize;
                 let pc = add3(&row(d.subtree_com, p), &c);
                 put(d.subtree_com, p, &pc);
                 mass[p] += mass[i];
@@ -143,17 +143,17 @@ pub fn com_pos(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     })?;
 
     for i in 1..nbody {
-        let root = m.body_rootid[i] as usize;
+        let root = m.body_rootid()[i] as usize;
         let offset = sub3(&row(d.xipos, i), &row(d.subtree_com, root));
-        let ci = inert_com(&row(m.body_inertia, i), &row(d.ximat, i), &offset, m.body_mass[i]);
+        let ci = inert_com(&row(m.body_inertia(), i), &row(d.ximat, i), &offset, m.body_mass()[i]);
         put(d.cinert, i, &ci);
     }
 
     for j in 0..m.raw.njnt as usize {
-        let da = m.jnt_dofadr[j] as usize;
-        let bi = m.jnt_bodyid[j] as usize;
-        let offset = sub3(&row(d.subtree_com, m.body_rootid[bi] as usize), &row(d.xanchor, j));
-        match m.jnt_type[j] {
+        let da = m.jnt_dofadr()[j] as usize;
+        let bi = m.jnt_bodyid()[j] as usize;
+        let offset = sub3(&row(d.subtree_com, m.body_rootid()[bi] as usize), &row(d.xanchor, j));
+        match m.jnt_type()[j] {
             t @ (JNT_FREE | JNT_BALL) => {
                 let mut k = da;
                 if t == JNT_FREE {
@@ -187,19 +187,19 @@ pub fn camlight(m: &Model, d: &mut Data, fixed: bool) {
     const TARGETCOM: i32 = mjtCamLight_::mjCAMLIGHT_TARGETBODYCOM as i32;
 
     for i in 0..m.raw.ncam as usize {
-        let id = m.cam_bodyid[i] as usize;
-        let id1 = m.cam_targetbodyid[i];
-        let (p, r) = local_to_global(d, &row(m.cam_pos, i), &row(m.cam_quat, i), id, 0);
+        let id = m.cam_bodyid()[i] as usize;
+        let id1 = m.cam_targetbodyid()[i];
+        let (p, r) = local_to_global(d, &row(m.cam_pos(), i), &row(m.cam_quat(), i), id, 0);
         put(d.cam_xpos, i, &p);
         put(d.cam_xmat, i, &r);
-        let mode = if fixed { 0 } else { m.cam_mode[i] };
+        let mode = if fixed { 0 } else { m.cam_mode()[i] };
         match mode {
             TRACK | TRACKCOM => {
-                put(d.cam_xmat, i, &row::<9>(m.cam_mat0, i));
+                put(d.cam_xmat, i, &row::<9>(m.cam_mat0(), i));
                 let p = if mode == TRACK {
-                    add3(&row(d.xpos, id), &row(m.cam_pos0, i))
+                    add3(&row(d.xpos, id), &row(m.cam_pos0(), i))
                 } else {
-                    add3(&row(d.subtree_com, id), &row(m.cam_poscom0, i))
+                    add3(&row(d.subtree_com, id), &row(m.cam_poscom0(), i))
                 };
                 put(d.cam_xpos, i, &p);
             }
@@ -220,20 +220,20 @@ pub fn camlight(m: &Model, d: &mut Data, fixed: bool) {
     }
 
     for i in 0..m.raw.nlight as usize {
-        let id = m.light_bodyid[i] as usize;
-        let id1 = m.light_targetbodyid[i];
-        let lp = row::<3>(m.light_pos, i);
+        let id = m.light_bodyid()[i] as usize;
+        let id1 = m.light_targetbodyid()[i];
+        let lp = row::<3>(m.light_pos(), i);
         let p = add3(&mul_mat_vec3(&row(d.xmat, id), &lp), &row(d.xpos, id));
         put(d.light_xpos, i, &p);
-        let mut dir = rot_vec_quat(&row(m.light_dir, i), &row(d.xquat, id));
-        let mode = if fixed { 0 } else { m.light_mode[i] };
+        let mut dir = rot_vec_quat(&row(m.light_dir(), i), &row(d.xquat, id));
+        let mode = if fixed { 0 } else { m.light_mode()[i] };
         match mode {
             TRACK | TRACKCOM => {
-                dir = row(m.light_dir0, i);
+                dir = row(m.light_dir0(), i);
                 let p = if mode == TRACK {
-                    add3(&row(d.xpos, id), &row(m.light_pos0, i))
+                    add3(&row(d.xpos, id), &row(m.light_pos0(), i))
                 } else {
-                    add3(&row(d.subtree_com, id), &row(m.light_poscom0, i))
+                    add3(&row(d.subtree_com, id), &row(m.light_poscom0(), i))
                 };
                 put(d.light_xpos, i, &p);
             }

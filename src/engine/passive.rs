@@ -12,31 +12,31 @@ pub fn passive(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     }
     let f = &mut *d.qfrc_passive;
     for j in 0..m.raw.njnt as usize {
-        let k = m.jnt_stiffness[j];
-        let mut padr = m.jnt_qposadr[j] as usize;
-        let mut dadr = m.jnt_dofadr[j] as usize;
-        match m.jnt_type[j] {
+        let k = m.jnt_stiffness()[j];
+        let mut padr = m.jnt_qposadr()[j] as usize;
+        let mut dadr = m.jnt_dofadr()[j] as usize;
+        match m.jnt_type()[j] {
             t @ (JNT_FREE | JNT_BALL) => {
                 if t == JNT_FREE {
                     for i in 0..3 {
-                        f[dadr + i] -= k * (d.qpos[padr + i] - m.qpos_spring[padr + i]);
+                        f[dadr + i] -= k * (d.qpos[padr + i] - m.qpos_spring()[padr + i]);
                     }
                     dadr += 3;
                     padr += 3;
                 }
-                let dif = sub_quat(&q4(&d.qpos[padr..]), &q4(&m.qpos_spring[padr..]));
+                let dif = sub_quat(&q4(&d.qpos[padr..]), &q4(&m.qpos_spring()[padr..]));
                 for i in 0..3 {
                     f[dadr + i] -= k * dif[i];
                 }
             }
             JNT_SLIDE | JNT_HINGE => {
-                f[dadr] -= k * (d.qpos[padr] - m.qpos_spring[padr]);
+                f[dadr] -= k * (d.qpos[padr] - m.qpos_spring()[padr]);
             }
             _ => {}
         }
     }
     for i in 0..m.raw.nv as usize {
-        f[i] -= m.dof_damping[i] * d.qvel[i];
+        f[i] -= m.dof_damping()[i] * d.qvel[i];
     }
     if m.raw.ntendon > 0 {
         return Err(not_implemented("tendon spring-dampers are"));

@@ -19,9 +19,9 @@ pub fn rne_with(m: &Model, d: &mut Data, qacc: Option<&[f64]>, result: &mut [f64
             cacc[5] = g[2] * -1.0;
         }
         for i in 1..nbody {
-            let bda = m.body_dofadr[i].max(0) as usize;
-            let n = m.body_dofnum[i] as usize;
-            let p = m.body_parentid[i] as usize;
+            let bda = m.body_dofadr()[i].max(0) as usize;
+            let n = m.body_dofnum()[i] as usize;
+            let p = m.body_parentid()[i] as usize;
             let tmp = mul_dof_vec(&d.cdof_dot[6 * bda..], &d.qvel[bda..], n);
             for k in 0..6 {
                 cacc[6 * i + k] = cacc[6 * p + k] + tmp[k];
@@ -43,7 +43,7 @@ pub fn rne_with(m: &Model, d: &mut Data, qacc: Option<&[f64]>, result: &mut [f64
         }
         cfrc[..6].fill(0.0);
         for i in (1..nbody).rev() {
-            let p = m.body_parentid[i] as usize;
+            let p = m.body_parentid()[i] as usize;
             if p != 0 {
                 for k in 0..6 {
                     cfrc[6 * p + k] += cfrc[6 * i + k];
@@ -51,7 +51,7 @@ pub fn rne_with(m: &Model, d: &mut Data, qacc: Option<&[f64]>, result: &mut [f64
             }
         }
         for i in 0..nv {
-            let b = m.dof_bodyid[i] as usize;
+            let b = m.dof_bodyid()[i] as usize;
             result[i] = dot(&d.cdof[6 * i..6 * i + 6], &cfrc[6 * b..6 * b + 6]);
         }
         Ok(())

@@ -18,13 +18,13 @@ pub fn set_const(m: &mut mjModel) -> Result<(), EngineError> {
 }
 
 /// Subtree masses (written first: everything else reads only the model's inputs).
-pub fn subtree_mass(m: &mut ModelMut, nbody: usize) {
+pub fn subtree_mass(mm: &mut ModelMut, nbody: usize) {
     for i in 0..nbody {
-        m.body_subtreemass[i] = m.body_mass[i];
+        mm.body_subtreemass[i] = mm.body_mass[i];
     }
     for i in (1..nbody).rev() {
-        let p = m.body_parentid[i] as usize;
-        m.body_subtreemass[p] += m.body_subtreemass[i];
+        let p = mm.body_parentid[i] as usize;
+        mm.body_subtreemass[p] += mm.body_subtreemass[i];
     }
 }
 
@@ -46,12 +46,12 @@ pub fn compute(m: &Model, d: &mut Data) -> Result<Consts, EngineError> {
     if m.raw.neq > 0 {
         return Err(not_implemented("mj_setConst with equality constraints is"));
     }
-    d.qpos.copy_from_slice(m.qpos0);
+    d.qpos.copy_from_slice(m.qpos0());
     kinematics(m, d)?;
     com_pos(m, d)?;
     camlight(m, d, true);
     crb(m, d, false);
-    let dof_m0: Vec<f64> = (0..nv).map(|i| d.qM[m.dof_Madr[i] as usize]).collect();
+    let dof_m0: Vec<f64> = (0..nv).map(|i| d.qM[m.dof_Madr()[i] as usize]).collect();
     factor_m(m, d)?;
     tendon(m)?;
     transmission(m, d)?;
@@ -74,8 +74,8 @@ pub fn compute(m: &Model, d: &mut Data) -> Result<Consts, EngineError> {
 
     let mut dof_invweight0 = vec![0.0; nv];
     for j in 0..m.raw.njnt as usize {
-        let id = m.jnt_dofadr[j] as usize;
-        let dnum = match m.jnt_type[j] {
+        let id = m.jnt_dofadr()[j] as usize;
+        let dnum = match m.jnt_type()[j] {
             JNT_FREE => 6,
             JNT_BALL => 3,
             _ => 1,
@@ -110,16 +110,16 @@ pub fn compute(m: &Model, d: &mut Data) -> Result<Consts, EngineError> {
 
     let mut cam = Vec::with_capacity(m.raw.ncam as usize);
     for i in 0..m.raw.ncam as usize {
-        let id = m.cam_bodyid[i] as usize;
-        let id1 = m.cam_targetbodyid[i];
+        let id = m.cam_bodyid()[i] as usize;
+        let id1 = m.cam_targetbodyid()[i];
         let xp = row::<3>(d.cam_xpos, i);
         let com = row::<3>(d.subtree_com, if id1 >= 0 { id1 as usize } else { id });
         cam.push((sub3(&xp, &row(d.xpos, id)), sub3(&xp, &com), row::<9>(d.cam_xmat, i)));
     }
     let mut light = Vec::with_capacity(m.raw.nlight as usize);
     for i in 0..m.raw.nlight as usize {
-        let id = m.light_bodyid[i] as usize;
-        let id1 = m.light_targetbodyid[i];
+        let id = m.light_bodyid()[i] as usize;
+        let id1 = m.light_targetbodyid()[i];
         let xp = row::<3>(d.light_xpos, i);
         let com = row::<3>(d.subtree_com, if id1 >= 0 { id1 as usize } else { id });
         light.push((sub3(&xp, &row(d.xpos, id)), sub3(&xp, &com), row::<3>(d.light_xdir, i)));
@@ -129,7 +129,7 @@ pub fn compute(m: &Model, d: &mut Data) -> Result<Consts, EngineError> {
     let stat = set_stat(m, d, body);
 
     // setSpring: leave d in qpos_spring, as 2.2.2 does
-    d.qpos.copy_from_slice(m.qpos_spring);
+    d.qpos.copy_from_slice(m.qpos_spring());
     kinematics(m, d)?;
     com_pos(m, d)?;
     tendon(m)?;
@@ -172,14 +172,14 @@ fn set_stat(m: &Model, d: &Data, body: &mut [f64]) -> mjStatistic {
     }
     for i in 0..m.raw.ngeom as usize {
         let mut rbound = 0.0;
-        if m.geom_rbound[i] > 0.0 {
-            rbound = m.geom_rbound[i];
-        } else if m.geom_type[i] == mjtGeom_::mjGEOM_PLANE as i32 {
-            let (s0, s1) = (m.geom_size[3 * i], m.geom_size[3 * i + 1]);
+        if m.geom_rbound()[i] > 0.0 {
+            rbound = m.geom_rbound()[i];
+        } else if m.geom_type()[i] == mjtGeom_::mjGEOM_PLANE as i32 {
+            let (s0, s1) = (m.geom_size()[3 * i], m.geom_size()[3 * i + 1]);
             rbound = if s0 != 0.0 || s1 != 0.0 { (if s0 > s1 { s0 } else { s1 }) * 0.1 } else { 1.0 };
-        } else if m.geom_type[i] == mjtGeom_::mjGEOM_HFIELD as i32 {
-            let j = m.geom_dataid[i] as usize;
-            let h = &m.hfield_size[4 * j..4 * j + 4];
+        } else if m.geom_type()[i] == mjtGeom_::mjGEOM_HFIELD as i32 {
+            let j = m.geom_dataid()[i] as usize;
+            let h = &m.hfield_size()[4 * j..4 * j + 4];
             let mx = |a: f64, b: f64| if a > b { a } else { b };
             rbound = mx(h[0], mx(h[1], mx(h[2], h[3]))) * 0.1;
         }
@@ -195,17 +195,17 @@ fn set_stat(m: &Model, d: &Data, body: &mut [f64]) -> mjStatistic {
     body.fill(0.0);
     for i in 0..m.raw.njnt as usize {
         let anchor = row::<3>(d.xanchor, i);
-        let id = m.jnt_bodyid[i] as usize;
+        let id = m.jnt_bodyid()[i] as usize;
         body[id] = max(body[id], dist3(&row(d.xipos, id), &anchor));
-        let id = m.body_parentid[id] as usize;
+        let id = m.body_parentid()[id] as usize;
         body[id] = max(body[id], dist3(&row(d.xipos, id), &anchor));
     }
     body[0] = 0.0;
     for i in 1..nbody {
-        let adr = m.body_geomadr[i].max(0) as usize;
-        for g in adr..adr + m.body_geomnum[i] as usize {
-            if m.geom_rbound[g] > 0.0 {
-                body[i] = max(body[i], m.geom_rbound[g] + dist3(&row(d.xipos, i), &row(d.geom_xpos, g)));
+        let adr = m.body_geomadr()[i].max(0) as usize;
+        for g in adr..adr + m.body_geomnum()[i] as usize {
+            if m.geom_rbound()[g] > 0.0 {
+                body[i] = max(body[i], m.geom_rbound()[g] + dist3(&row(d.xipos, i), &row(d.geom_xpos, g)));
             }
         }
     }
@@ -220,14 +220,14 @@ fn set_stat(m: &Model, d: &Data, body: &mut [f64]) -> mjStatistic {
     if nbody > 1 {
         stat.meanmass = 0.0;
         for i in 1..nbody {
-            stat.meanmass += m.body_mass[i];
+            stat.meanmass += m.body_mass()[i];
         }
         stat.meanmass /= (nbody - 1) as f64;
     }
     if nv > 0 {
         stat.meaninertia = 0.0;
         for i in 0..nv {
-            stat.meaninertia += d.qM[m.dof_Madr[i] as usize];
+            stat.meaninertia += d.qM[m.dof_Madr()[i] as usize];
         }
         stat.meaninertia /= nv as f64;
     }
@@ -235,21 +235,21 @@ fn set_stat(m: &Model, d: &Data, body: &mut [f64]) -> mjStatistic {
 }
 
 /// Stores computed constants into the model.
-pub fn store(m: &mut ModelMut, stat_out: &mut mjStatistic, c: Consts) {
-    m.dof_M0.copy_from_slice(&c.dof_m0);
-    m.actuator_length0.copy_from_slice(&c.actuator_length0);
-    m.body_invweight0.copy_from_slice(&c.body_invweight0);
-    m.dof_invweight0.copy_from_slice(&c.dof_invweight0);
-    m.actuator_acc0.copy_from_slice(&c.actuator_acc0);
+pub fn store(mm: &mut ModelMut, stat_out: &mut mjStatistic, c: Consts) {
+    mm.dof_M0.copy_from_slice(&c.dof_m0);
+    mm.actuator_length0.copy_from_slice(&c.actuator_length0);
+    mm.body_invweight0.copy_from_slice(&c.body_invweight0);
+    mm.dof_invweight0.copy_from_slice(&c.dof_invweight0);
+    mm.actuator_acc0.copy_from_slice(&c.actuator_acc0);
     for (i, (pos0, poscom0, mat0)) in c.cam.iter().enumerate() {
-        put(m.cam_pos0, i, pos0);
-        put(m.cam_poscom0, i, poscom0);
-        put(m.cam_mat0, i, mat0);
+        put(mm.cam_pos0, i, pos0);
+        put(mm.cam_poscom0, i, poscom0);
+        put(mm.cam_mat0, i, mat0);
     }
     for (i, (pos0, poscom0, dir0)) in c.light.iter().enumerate() {
-        put(m.light_pos0, i, pos0);
-        put(m.light_poscom0, i, poscom0);
-        put(m.light_dir0, i, dir0);
+        put(mm.light_pos0, i, pos0);
+        put(mm.light_poscom0, i, poscom0);
+        put(mm.light_dir0, i, dir0);
     }
     *stat_out = c.stat;
 }

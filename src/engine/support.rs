@@ -147,11 +147,11 @@ pub fn reset_data(m: &Model, d: &mut Data) {
     r.time = 0.0;
     r.energy = [0.0; 2];
     zero_arrays(d);
-    d.qpos.copy_from_slice(m.qpos0);
-    for (i, &id) in m.body_mocapid.iter().enumerate() {
+    d.qpos.copy_from_slice(m.qpos0());
+    for (i, &id) in m.body_mocapid().iter().enumerate() {
         if id >= 0 {
-            put(d.mocap_pos, id as usize, &row::<3>(m.body_pos, i));
-            put(d.mocap_quat, id as usize, &row::<4>(m.body_quat, i));
+            put(d.mocap_pos, id as usize, &row::<3>(m.body_pos(), i));
+            put(d.mocap_quat, id as usize, &row::<4>(m.body_quat(), i));
         }
     }
 }
@@ -161,34 +161,34 @@ fn name_table<'a>(m: &Model<'a>, objtype: i32) -> &'a [i32] {
     use mjtObj_::*;
     let t = |o: mjtObj_| o as i32;
     match objtype {
-        x if x == t(mjOBJ_BODY) || x == t(mjOBJ_XBODY) => m.name_bodyadr,
-        x if x == t(mjOBJ_JOINT) => m.name_jntadr,
-        x if x == t(mjOBJ_GEOM) => m.name_geomadr,
-        x if x == t(mjOBJ_SITE) => m.name_siteadr,
-        x if x == t(mjOBJ_CAMERA) => m.name_camadr,
-        x if x == t(mjOBJ_LIGHT) => m.name_lightadr,
-        x if x == t(mjOBJ_MESH) => m.name_meshadr,
-        x if x == t(mjOBJ_SKIN) => m.name_skinadr,
-        x if x == t(mjOBJ_HFIELD) => m.name_hfieldadr,
-        x if x == t(mjOBJ_TEXTURE) => m.name_texadr,
-        x if x == t(mjOBJ_MATERIAL) => m.name_matadr,
-        x if x == t(mjOBJ_PAIR) => m.name_pairadr,
-        x if x == t(mjOBJ_EXCLUDE) => m.name_excludeadr,
-        x if x == t(mjOBJ_EQUALITY) => m.name_eqadr,
-        x if x == t(mjOBJ_TENDON) => m.name_tendonadr,
-        x if x == t(mjOBJ_ACTUATOR) => m.name_actuatoradr,
-        x if x == t(mjOBJ_SENSOR) => m.name_sensoradr,
-        x if x == t(mjOBJ_NUMERIC) => m.name_numericadr,
-        x if x == t(mjOBJ_TEXT) => m.name_textadr,
-        x if x == t(mjOBJ_TUPLE) => m.name_tupleadr,
-        x if x == t(mjOBJ_KEY) => m.name_keyadr,
+        x if x == t(mjOBJ_BODY) || x == t(mjOBJ_XBODY) => m.name_bodyadr(),
+        x if x == t(mjOBJ_JOINT) => m.name_jntadr(),
+        x if x == t(mjOBJ_GEOM) => m.name_geomadr(),
+        x if x == t(mjOBJ_SITE) => m.name_siteadr(),
+        x if x == t(mjOBJ_CAMERA) => m.name_camadr(),
+        x if x == t(mjOBJ_LIGHT) => m.name_lightadr(),
+        x if x == t(mjOBJ_MESH) => m.name_meshadr(),
+        x if x == t(mjOBJ_SKIN) => m.name_skinadr(),
+        x if x == t(mjOBJ_HFIELD) => m.name_hfieldadr(),
+        x if x == t(mjOBJ_TEXTURE) => m.name_texadr(),
+        x if x == t(mjOBJ_MATERIAL) => m.name_matadr(),
+        x if x == t(mjOBJ_PAIR) => m.name_pairadr(),
+        x if x == t(mjOBJ_EXCLUDE) => m.name_excludeadr(),
+        x if x == t(mjOBJ_EQUALITY) => m.name_eqadr(),
+        x if x == t(mjOBJ_TENDON) => m.name_tendonadr(),
+        x if x == t(mjOBJ_ACTUATOR) => m.name_actuatoradr(),
+        x if x == t(mjOBJ_SENSOR) => m.name_sensoradr(),
+        x if x == t(mjOBJ_NUMERIC) => m.name_numericadr(),
+        x if x == t(mjOBJ_TEXT) => m.name_textadr(),
+        x if x == t(mjOBJ_TUPLE) => m.name_tupleadr(),
+        x if x == t(mjOBJ_KEY) => m.name_keyadr(),
         _ => &[],
     }
 }
 
 /// Bytes of the name starting at `adr`, without the terminating NUL.
 fn name_at<'a>(m: &Model<'a>, adr: usize) -> &'a [std::os::raw::c_char] {
-    let rest = &m.names[adr.min(m.names.len())..];
+    let rest = &m.names()[adr.min(m.names().len())..];
     let end = rest.iter().position(|&c| c == 0).unwrap_or(rest.len());
     &rest[..end]
 }
@@ -212,13 +212,13 @@ pub fn id2name(m: &Model, objtype: i32, id: i32) -> Option<usize> {
         return None;
     }
     let a = adr[id as usize] as usize;
-    (m.names.get(a).copied().unwrap_or(0) != 0).then_some(a)
+    (m.names().get(a).copied().unwrap_or(0) != 0).then_some(a)
 }
 
 /// Sum of body masses (mj_getTotalmass).
 pub fn total_mass(m: &Model) -> f64 {
     let mut res = 0.0;
-    for &b in &m.body_mass[1..] {
+    for &b in &m.body_mass()[1..] {
         res += b;
     }
     res
@@ -248,33 +248,33 @@ pub fn energy_pos(m: &Model, d: &mut Data) {
     let mut e = 0.0;
     if !disabled(m, mjtDisableBit_::mjDSBL_GRAVITY) {
         for i in 1..m.raw.nbody as usize {
-            e -= m.body_mass[i] * dot3(&m.raw.opt.gravity, &row(d.xipos, i));
+            e -= m.body_mass()[i] * dot3(&m.raw.opt.gravity, &row(d.xipos, i));
         }
     }
     if !disabled(m, mjtDisableBit_::mjDSBL_PASSIVE) {
         for j in 0..m.raw.njnt as usize {
-            let k = m.jnt_stiffness[j];
-            let mut padr = m.jnt_qposadr[j] as usize;
-            match m.jnt_type[j] {
+            let k = m.jnt_stiffness()[j];
+            let mut padr = m.jnt_qposadr()[j] as usize;
+            match m.jnt_type()[j] {
                 t @ (JNT_FREE | JNT_BALL) => {
                     if t == JNT_FREE {
-                        let dif = sub3(&v3(&d.qpos[padr..]), &v3(&m.qpos_spring[padr..]));
+                        let dif = sub3(&v3(&d.qpos[padr..]), &v3(&m.qpos_spring()[padr..]));
                         e += 0.5 * k * dot3(&dif, &dif);
                         padr += 3;
                     }
-                    let dif = sub_quat(&q4(&d.qpos[padr..]), &q4(&m.qpos_spring[padr..]));
+                    let dif = sub_quat(&q4(&d.qpos[padr..]), &q4(&m.qpos_spring()[padr..]));
                     e += 0.5 * k * dot3(&dif, &dif);
                 }
                 JNT_SLIDE | JNT_HINGE => {
-                    let dq = d.qpos[padr] - m.qpos_spring[padr];
+                    let dq = d.qpos[padr] - m.qpos_spring()[padr];
                     e += 0.5 * k * dq * dq;
                 }
                 _ => {}
             }
         }
         for i in 0..m.raw.ntendon as usize {
-            let dl = d.ten_length[i] - m.tendon_lengthspring[i];
-            e += 0.5 * m.tendon_stiffness[i] * dl * dl;
+            let dl = d.ten_length[i] - m.tendon_lengthspring()[i];
+            e += 0.5 * m.tendon_stiffness()[i] * dl * dl;
         }
     }
     d.raw.energy[0] = e;

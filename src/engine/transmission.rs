@@ -13,17 +13,17 @@ pub fn transmission(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     }
     d.actuator_moment.fill(0.0);
     for i in 0..nu {
-        let id = m.actuator_trnid[2 * i] as usize;
-        let gear = &m.actuator_gear[6 * i..6 * i + 6];
-        let trn = m.actuator_trntype[i];
+        let id = m.actuator_trnid()[2 * i] as usize;
+        let gear = &m.actuator_gear()[6 * i..6 * i + 6];
+        let trn = m.actuator_trntype()[i];
         let inparent = trn == mjtTrn_::mjTRN_JOINTINPARENT as i32;
         if trn != mjtTrn_::mjTRN_JOINT as i32 && !inparent {
             return Err(not_implemented(&format!("actuator transmission type {trn} is")));
         }
         let moment = &mut d.actuator_moment[i * nv..(i + 1) * nv];
-        let qadr = m.jnt_qposadr[id] as usize;
-        let dadr = m.jnt_dofadr[id] as usize;
-        match m.jnt_type[id] {
+        let qadr = m.jnt_qposadr()[id] as usize;
+        let dadr = m.jnt_dofadr()[id] as usize;
+        match m.jnt_type()[id] {
             JNT_SLIDE | JNT_HINGE => {
                 d.actuator_length[i] = d.qpos[qadr] * gear[0];
                 moment[dadr] = gear[0];

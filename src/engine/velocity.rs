@@ -14,12 +14,12 @@ fn add6(a: &mut Vec6, b: &Vec6) {
 pub fn com_vel(m: &Model, d: &mut Data) {
     put(d.cvel, 0, &[0.0; 6]);
     for i in 1..m.raw.nbody as usize {
-        let bda = m.body_dofadr[i] as usize;
-        let dofnum = m.body_dofnum[i] as usize;
-        let mut cvel = row::<6>(d.cvel, m.body_parentid[i] as usize);
+        let bda = m.body_dofadr()[i] as usize;
+        let dofnum = m.body_dofnum()[i] as usize;
+        let mut cvel = row::<6>(d.cvel, m.body_parentid()[i] as usize);
         let mut j = 0;
         while j < dofnum {
-            let t = m.jnt_type[m.dof_jntid[bda + j] as usize];
+            let t = m.jnt_type()[m.dof_jntid()[bda + j] as usize];
             if t == JNT_FREE || t == JNT_BALL {
                 if t == JNT_FREE {
                     for k in 0..3 {
