@@ -57,11 +57,9 @@ pub fn fill(c: &Compiled, m: &mut ModelMut) {
     c.fill(m);
 }
 
-/// Constants that depend on qpos0 (mj_setConst). CALL POINT for the engine's implementation:
-/// until `crate::engine::setconst` exists these fields keep their allocation values.
+/// Constants that depend on qpos0 (mj_setConst), computed by the engine.
 pub fn set_const(m: &mut mjModel) -> Result<(), EngineError> {
-    let _ = m;
-    Ok(())
+    crate::engine::setconst::set_const(m)
 }
 
 /// Applies the user's `<statistic>` overrides after `set_const`.
