@@ -3,6 +3,7 @@
 use crate::abi::alloc::make_model;
 use crate::abi::view::ModelMut;
 use crate::abi::*;
+use crate::capi::errmem;
 use crate::compiler;
 use crate::xml::{reader, schema, tree};
 use std::os::raw::{c_char, c_int};
@@ -66,6 +67,16 @@ fn parse(bytes: &[u8]) -> Result<compiler::spec::ModelSpec, String> {
     reader::read(&root)
 }
 
+thread_local! {
+    /// Last warning raised while a model compiles (2.2.2 returns it in the error buffer).
+    static COMPILE_WARNING: std::cell::RefCell<String> = const { std::cell::RefCell::new(String::new()) };
+}
+
+unsafe extern "C" fn keep_warning(msg: *const c_char) {
+    let text = crate::capi::errmem::cstr(msg).into_owned();
+    COMPILE_WARNING.with(|w| *w.borrow_mut() = text);
+}
+
 /// Parses, compiles and allocates; returns the model or the error text.
 unsafe fn load(filename: *const c_char, vfs: *const mjVFS) -> Result<*mut mjModel, String> {
     if filename.is_null() {
@@ -101,10 +112,15 @@ pub unsafe extern "C" fn mj_loadXML(
     error: *mut c_char,
     error_sz: c_int,
 ) -> *mut mjModel {
+    COMPILE_WARNING.with(|w| w.borrow_mut().clear());
+    let saved = errmem::_mjPRIVATE__get_tls_warning_fn();
+    errmem::_mjPRIVATE__set_tls_warning_fn(Some(keep_warning));
     let result = std::panic::catch_unwind(|| load(filename, vfs));
+    errmem::_mjPRIVATE__set_tls_warning_fn(saved);
     match result {
         Ok(Ok(m)) => {
-            set_error(error, error_sz, "");
+            let warning = COMPILE_WARNING.with(|w| std::mem::take(&mut *w.borrow_mut()));
+            set_error(error, error_sz, &warning);
             m
         }
         Ok(Err(msg)) => {
