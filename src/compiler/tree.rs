@@ -382,6 +382,12 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
                 out,
             });
         }
+        for cid in bodies[i].cameras.clone() {
+            compile_camera(&mut cameras[cid].0, cid, i, &bodies, nuser[4], &settings)?;
+        }
+        for lid in bodies[i].lights.clone() {
+            compile_light(&mut lights[lid].0, lid, i, &bodies)?;
+        }
     }
     let geoms: Vec<FGeom> = geoms.into_iter().flatten().collect();
     let sites: Vec<FSite> = sites.into_iter().flatten().collect();

@@ -926,18 +926,10 @@ pub fn read(root: &Element) -> R<ModelSpec> {
     for s in sections("keyframe") {
         read_keys(&mut spec, s)?;
     }
+    const KNOWN: [&str; 9] =
+        ["compiler", "option", "size", "visual", "statistic", "default", "worldbody", "actuator", "keyframe"];
     for c in &root.children {
-        let known = [
-            "compiler",
-            "option",
-            "size",
-            "statistic",
-            "default",
-            "worldbody",
-            "actuator",
-            "keyframe",
-        ];
-        if !known.contains(&c.name.as_str()) && !(c.name == "visual" && c.children.is_empty()) {
+        if !KNOWN.contains(&c.name.as_str()) && !c.children.is_empty() {
             return Err(unsupported(c, &c.name));
         }
     }
