@@ -86,6 +86,8 @@ unsafe fn load(filename: *const c_char, vfs: *const mjVFS) -> Result<*mut mjMode
         .to_string_lossy()
         .into_owned();
     let spec = parse(&load_text(&fname, vfs)?)?;
+    // from here on, as in 2.2.2's compiler, warnings go to the error buffer
+    errmem::_mjPRIVATE__set_tls_warning_fn(Some(keep_warning));
     // SAFETY: all-zero bits are a valid mjModel header (null pointers, zero sizes).
     let blank: mjModel = std::mem::zeroed();
     let compiled = compiler::compile(spec, blank).map_err(|e| e.render())?;
@@ -114,7 +116,6 @@ pub unsafe extern "C" fn mj_loadXML(
 ) -> *mut mjModel {
     COMPILE_WARNING.with(|w| w.borrow_mut().clear());
     let saved = errmem::_mjPRIVATE__get_tls_warning_fn();
-    errmem::_mjPRIVATE__set_tls_warning_fn(Some(keep_warning));
     let result = std::panic::catch_unwind(|| load(filename, vfs));
     errmem::_mjPRIVATE__set_tls_warning_fn(saved);
     match result {

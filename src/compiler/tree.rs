@@ -533,13 +533,13 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
             return Err(CError::at(msg, &b.spec.name, i, b.spec.line));
         }
     }
-    for b in &bodies {
+    for (bi, b) in bodies.iter().enumerate() {
         for &j in &b.joints {
             if joints[j].spec.kind == JointType::Free && (b.joints.len() > 1) {
                 return Err(CError::at(
                     "free joint can only appear by itself".into(),
                     &b.spec.name,
-                    0,
+                    bi,
                     b.spec.line,
                 ));
             }
@@ -547,7 +547,7 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
                 return Err(CError::at(
                     "free joint can only be used on top level".into(),
                     &b.spec.name,
-                    0,
+                    bi,
                     b.spec.line,
                 ));
             }

@@ -13,7 +13,7 @@ pub fn xerr(el: &Element, msg: &str) -> String {
     )
 }
 
-fn parse_real<T: std::str::FromStr + From<f32>>(tok: &str) -> Option<T> {
+fn parse_real<T: std::str::FromStr + From<f32> + PartialEq>(tok: &str) -> Option<T> {
     let body = tok.strip_prefix('-').unwrap_or(tok);
     let special = |s: &str| s.eq_ignore_ascii_case("inf") || s.eq_ignore_ascii_case("nan");
     if (tok.len() == 3 || (tok.len() == 4 && tok.starts_with('-'))) && special(body) {
@@ -35,7 +35,7 @@ fn parse_real<T: std::str::FromStr + From<f32>>(tok: &str) -> Option<T> {
 }
 
 /// Reads up to `out.len()` numbers of attribute `name`; returns how many (0: absent).
-fn read_nums<T: std::str::FromStr + From<f32> + Copy>(
+fn read_nums<T: std::str::FromStr + From<f32> + Copy + PartialEq>(
     el: &Element,
     name: &str,
     out: &mut [T],
@@ -58,6 +58,9 @@ fn read_nums<T: std::str::FromStr + From<f32> + Copy>(
         let Some(tok) = toks.next() else { break };
         out[n] = parse_real::<T>(tok)
             .ok_or_else(|| xerr(el, &format!("problem reading attribute '{name}'")))?;
+        if out[n] != out[n] {
+            crate::capi::errmem::warning("XML contains a 'NaN'. Please check it carefully.");
+        }
         n += 1;
     }
     if exact && n < out.len() {
@@ -926,8 +929,17 @@ pub fn read(root: &Element) -> R<ModelSpec> {
     for s in sections("keyframe") {
         read_keys(&mut spec, s)?;
     }
-    const KNOWN: [&str; 9] =
-        ["compiler", "option", "size", "visual", "statistic", "default", "worldbody", "actuator", "keyframe"];
+    const KNOWN: [&str; 9] = [
+        "compiler",
+        "option",
+        "size",
+        "visual",
+        "statistic",
+        "default",
+        "worldbody",
+        "actuator",
+        "keyframe",
+    ];
     for c in &root.children {
         if !KNOWN.contains(&c.name.as_str()) && !c.children.is_empty() {
             return Err(unsupported(c, &c.name));
