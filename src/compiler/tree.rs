@@ -452,22 +452,76 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
                 "missing transmission target for actuator '{name}' (id = {id})"
             )));
         }
-        match a.trntype {
+        let find_site = |n: &str| sites.iter().position(|st| st.spec.name == n);
+        let missing = |n: &str| {
+            aerr(format!(
+                "transmission target '{n}' not found in actuator {id}"
+            ))
+        };
+        let ids = match a.trntype {
             0 | 1 => match joints.iter().position(|j| j.spec.name == a.target) {
-                Some(j) => trnid.push([j as i32, -1]),
+                Some(j) => [j as i32, -1],
                 None => {
+                    let t = &a.target;
                     return Err(aerr(format!(
-                        "unknown transmission target '{}' for actuator id = {id}",
-                        a.target
-                    )))
+                        "unknown transmission target '{t}' for actuator id = {id}"
+                    )));
                 }
             },
-            _ => {
+            2 => {
+                if a.slidersite.is_empty() {
+                    return Err(aerr(format!(
+                        "missing base site for slider-crank '{name}' (id = {id})"
+                    )));
+                }
+                let Some(slider) = find_site(&a.slidersite) else {
+                    let ss = &a.slidersite;
+                    return Err(aerr(format!(
+                        "base site '{ss}' not found for actuator {id}"
+                    )));
+                };
+                if a.cranklength <= 0.0 {
+                    return Err(aerr(format!(
+                        "crank length must be positive in actuator '{name}' (id = {id})"
+                    )));
+                }
+                [
+                    find_site(&a.target).ok_or_else(|| missing(&a.target))? as i32,
+                    slider as i32,
+                ]
+            }
+            4 => {
+                let mut refsite = -1;
+                if !a.refsite.is_empty() {
+                    let Some(r) = find_site(&a.refsite) else {
+                        let rs = &a.refsite;
+                        return Err(aerr(format!(
+                            "reference site '{rs}' not found for actuator {id}"
+                        )));
+                    };
+                    refsite = r as i32;
+                }
+                [
+                    find_site(&a.target).ok_or_else(|| missing(&a.target))? as i32,
+                    refsite,
+                ]
+            }
+            5 => [
+                find_body(&bodies, &a.target).ok_or_else(|| missing(&a.target))? as i32,
+                -1,
+            ],
+            3 => {
                 return Err(aerr(
-                    "only joint transmissions are supported by this compiler yet".into(),
+                    "tendon transmissions are not supported by this compiler yet".into(),
                 ))
             }
-        }
+            _ => {
+                return Err(aerr(format!(
+                    "invalid transmission type in actuator '{name}' (id = {id})"
+                )))
+            }
+        };
+        trnid.push(ids);
     }
 
     // sizes

@@ -338,7 +338,16 @@ fn one_light(el: &Element, l: &mut Light) -> R<()> {
     Ok(())
 }
 
-const ACTUATORS: [&str; 4] = ["general", "motor", "position", "velocity"];
+const ACTUATORS: [&str; 8] = [
+    "general",
+    "motor",
+    "position",
+    "velocity",
+    "intvelocity",
+    "damper",
+    "cylinder",
+    "adhesion",
+];
 
 fn one_actuator(el: &Element, a: &mut Actuator) -> R<()> {
     text(el, "name", &mut a.name);
@@ -413,6 +422,57 @@ fn one_actuator(el: &Element, a: &mut Actuator) -> R<()> {
             num(el, gain, &mut a.gainprm[0])?;
             a.biasprm[slot] = -a.gainprm[0];
             (a.dyntype, a.gaintype, a.biastype) = (0, 0, 1);
+        }
+        "intvelocity" => {
+            a.biasprm = [0.0; 10];
+            num(el, "kp", &mut a.gainprm[0])?;
+            (a.dyntype, a.gaintype, a.biastype) = (1, 0, 1);
+            a.actlimited = 1;
+            a.biasprm[1] = -a.gainprm[0];
+        }
+        "damper" | "adhesion" => {
+            a.gainprm = [0.0; 10];
+            let slot = if el.name == "damper" { 2 } else { 0 };
+            if el.name == "adhesion" {
+                a.biasprm = [0.0; 10];
+                a.gainprm[0] = 1.0;
+            }
+            num(
+                el,
+                if slot == 2 { "kv" } else { "gain" },
+                &mut a.gainprm[slot],
+            )?;
+            if a.gainprm[slot] < 0.0 {
+                let what = if slot == 2 {
+                    "damping coefficient"
+                } else {
+                    "adhesion gain"
+                };
+                return Err(xerr(el, &format!("{what} cannot be negative")));
+            }
+            if slot == 2 {
+                a.gainprm[2] = -a.gainprm[2];
+            }
+            read_nums(el, "ctrlrange", &mut a.ctrlrange, true, true)?;
+            if a.ctrlrange[0] < 0.0 || a.ctrlrange[1] < 0.0 {
+                let what = if slot == 2 { "damper" } else { "adhesion" };
+                return Err(xerr(
+                    el,
+                    &format!("{what} control range cannot be negative"),
+                ));
+            }
+            a.ctrllimited = 1;
+            (a.dyntype, a.gaintype, a.biastype) = (0, if slot == 2 { 1 } else { 0 }, 0);
+        }
+        "cylinder" => {
+            num(el, "timeconst", &mut a.dynprm[0])?;
+            nums(el, "bias", &mut a.biasprm[..3])?;
+            num(el, "area", &mut a.gainprm[0])?;
+            let mut diameter = 0.0;
+            if num(el, "diameter", &mut diameter)? {
+                a.gainprm[0] = std::f64::consts::PI / 4.0 * diameter * diameter;
+            }
+            (a.dyntype, a.gaintype, a.biastype) = (2, 0, 1);
         }
         other => return Err(unsupported(el, other)),
     }
