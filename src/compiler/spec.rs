@@ -339,6 +339,47 @@ impl Default for Light {
     }
 }
 
+/// Explicit contact pair (`<contact><pair>`).
+#[derive(Debug, Clone)]
+pub struct Pair {
+    pub name: String,
+    pub line: Line,
+    pub geom1: String,
+    pub geom2: String,
+    pub condim: i32,
+    pub solref: [f64; 2],
+    pub solimp: [f64; 5],
+    pub margin: f64,
+    pub gap: f64,
+    pub friction: [f64; 5],
+}
+
+impl Default for Pair {
+    fn default() -> Self {
+        Pair {
+            name: String::new(),
+            line: -1,
+            geom1: String::new(),
+            geom2: String::new(),
+            condim: 3,
+            solref: default_solref(),
+            solimp: default_solimp(),
+            margin: 0.0,
+            gap: 0.0,
+            friction: [1.0, 1.0, 0.005, 0.0001, 0.0001],
+        }
+    }
+}
+
+/// Excluded body pair (`<contact><exclude>`).
+#[derive(Debug, Clone, Default)]
+pub struct Exclude {
+    pub name: String,
+    pub line: Line,
+    pub body1: String,
+    pub body2: String,
+}
+
 /// A default class: the values new elements of each kind start from.
 #[derive(Debug, Clone, Default)]
 pub struct DefaultClass {
@@ -349,6 +390,7 @@ pub struct DefaultClass {
     pub site: Site,
     pub camera: Camera,
     pub light: Light,
+    pub pair: Pair,
     pub actuator: Actuator,
 }
 
@@ -476,6 +518,8 @@ pub struct ModelSpec {
     pub defaults: Vec<DefaultClass>,
     pub world: Body,
     pub actuators: Vec<Actuator>,
+    pub pairs: Vec<Pair>,
+    pub excludes: Vec<Exclude>,
     pub keys: Vec<Key>,
 }
 
@@ -506,6 +550,8 @@ impl Default for ModelSpec {
             }],
             world,
             actuators: Vec::new(),
+            pairs: Vec::new(),
+            excludes: Vec::new(),
             keys: Vec::new(),
         }
     }

@@ -59,6 +59,10 @@ pub struct Compiled {
     /// (camera with target resolved into `mode`-independent id, body)
     cameras: Vec<(Camera, usize)>,
     lights: Vec<(Light, usize)>,
+    /// (pair, geom ids, body signature), sorted by signature
+    pairs: Vec<(Pair, [i32; 2], i32)>,
+    /// (name, body signature), sorted by signature
+    excludes: Vec<(String, i32)>,
     actuators: Vec<Actuator>,
     keys: Vec<Key>,
     trnid: Vec<[i32; 2]>,
@@ -213,6 +217,11 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
     check_names(
         lights.iter().map(|l| (l.0.name.as_str(), l.0.line)),
         "light",
+    )?;
+    check_names(spec.pairs.iter().map(|p| (p.name.as_str(), p.line)), "pair")?;
+    check_names(
+        spec.excludes.iter().map(|e| (e.name.as_str(), e.line)),
+        "exclude",
     )?;
     check_names(
         actuators.iter().map(|a| (a.name.as_str(), a.line)),
@@ -392,6 +401,51 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
     let geoms: Vec<FGeom> = geoms.into_iter().flatten().collect();
     let sites: Vec<FSite> = sites.into_iter().flatten().collect();
 
+    // contact pairs and exclusions, sorted by body signature
+    let signature = |b1: usize, b2: usize| (((b1 + 1) << 16) + b2 + 1) as i32;
+    let mut pairs = Vec::new();
+    for (id, p) in spec.pairs.into_iter().enumerate() {
+        let perr = |m: String| CError::at(m, &p.name, id, p.line);
+        if ![1, 3, 4, 6].contains(&p.condim) {
+            return Err(perr(format!("invalid condim in collision {id}")));
+        }
+        let find = |n: &str| geoms.iter().position(|g| g.spec.name == n);
+        let Some(mut g1) = find(&p.geom1) else {
+            return Err(perr(format!(
+                "geom '{}' not found in collision {id}",
+                p.geom1
+            )));
+        };
+        let Some(mut g2) = find(&p.geom2) else {
+            return Err(perr(format!(
+                "geom '{}' not found in collision {id}",
+                p.geom2
+            )));
+        };
+        if geoms[g1].body > geoms[g2].body {
+            std::mem::swap(&mut g1, &mut g2);
+        }
+        let sig = signature(geoms[g1].body, geoms[g2].body);
+        pairs.push((p, [g1 as i32, g2 as i32], sig));
+    }
+    let mut excludes = Vec::new();
+    for (id, e) in spec.excludes.into_iter().enumerate() {
+        let find = |n: &str| find_body(&bodies, n);
+        let missing = |n: &str| {
+            CError::at(
+                format!("body '{n}' not found in bodypair {id}"),
+                &e.name,
+                id,
+                e.line,
+            )
+        };
+        let b1 = find(&e.body1).ok_or_else(|| missing(&e.body1))?;
+        let b2 = find(&e.body2).ok_or_else(|| missing(&e.body2))?;
+        excludes.push((e.name.clone(), signature(b1.min(b2), b1.max(b2))));
+    }
+    pairs.sort_by_key(|p| p.2);
+    excludes.sort_by_key(|e| e.1);
+
     // actuators
     let mut trnid = Vec::new();
     for (id, a) in actuators.iter_mut().enumerate() {
@@ -550,6 +604,10 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
     nnames += sites.iter().map(|s| s.spec.name.len() + 1).sum::<usize>();
     nnames += cameras.iter().map(|c| c.0.name.len() + 1).sum::<usize>();
     nnames += lights.iter().map(|l| l.0.name.len() + 1).sum::<usize>();
+    nnames += pairs.iter().map(|p| p.0.name.len() + 1).sum::<usize>();
+    nnames += excludes.iter().map(|e| e.0.len() + 1).sum::<usize>();
+    h.npair = pairs.len() as i32;
+    h.nexclude = excludes.len() as i32;
     nnames += actuators.iter().map(|a| a.name.len() + 1).sum::<usize>();
     nnames += keys.iter().map(|k| k.name.len() + 1).sum::<usize>();
     h.nnames = nnames as i32;
@@ -688,6 +746,8 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
         sites,
         cameras,
         lights,
+        pairs,
+        excludes,
         actuators,
         keys,
         trnid,
@@ -831,6 +891,12 @@ impl Compiled {
         }
         for (i, l) in self.lights.iter().enumerate() {
             name(&mut m.name_lightadr[i], &l.0.name, m.names);
+        }
+        for (i, p) in self.pairs.iter().enumerate() {
+            name(&mut m.name_pairadr[i], &p.0.name, m.names);
+        }
+        for (i, e) in self.excludes.iter().enumerate() {
+            name(&mut m.name_excludeadr[i], &e.0, m.names);
         }
         for (i, a) in self.actuators.iter().enumerate() {
             name(&mut m.name_actuatoradr[i], &a.name, m.names);
@@ -1059,6 +1125,22 @@ impl Compiled {
                 scnt = 0;
                 m.dof_simplenum[i] = 0;
             }
+        }
+
+        // contact pairs, exclusions
+        for (i, (p, g, sig)) in self.pairs.iter().enumerate() {
+            m.pair_dim[i] = p.condim;
+            m.pair_geom1[i] = g[0];
+            m.pair_geom2[i] = g[1];
+            m.pair_signature[i] = *sig;
+            put(m.pair_solref, i, &p.solref);
+            put(m.pair_solimp, i, &p.solimp);
+            m.pair_margin[i] = p.margin;
+            m.pair_gap[i] = p.gap;
+            put(m.pair_friction, i, &p.friction);
+        }
+        for (i, e) in self.excludes.iter().enumerate() {
+            m.exclude_signature[i] = e.1;
         }
 
         // actuators

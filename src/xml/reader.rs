@@ -481,6 +481,52 @@ fn one_actuator(el: &Element, a: &mut Actuator) -> R<()> {
     Ok(())
 }
 
+fn one_pair(el: &Element, p: &mut Pair, in_default: bool) -> R<()> {
+    if !in_default {
+        read_text(el, "geom1", &mut p.geom1)?;
+        read_text(el, "geom2", &mut p.geom2)?;
+    }
+    text(el, "name", &mut p.name);
+    int(el, "condim", &mut p.condim)?;
+    some_nums(el, "solref", &mut p.solref)?;
+    some_nums(el, "solimp", &mut p.solimp)?;
+    num(el, "margin", &mut p.margin)?;
+    num(el, "gap", &mut p.gap)?;
+    some_nums(el, "friction", &mut p.friction)?;
+    p.line = el.line;
+    Ok(())
+}
+
+/// Required text attribute.
+fn read_text(el: &Element, name: &str, out: &mut String) -> R<()> {
+    if text(el, name, out) {
+        Ok(())
+    } else {
+        Err(xerr(el, &format!("required attribute missing: '{name}'")))
+    }
+}
+
+fn read_contact(spec: &mut ModelSpec, el: &Element) -> R<()> {
+    for c in &el.children {
+        let def = class_of(spec, c)?.unwrap_or(0);
+        if c.name == "pair" {
+            let mut p = spec.defaults[def].pair.clone();
+            one_pair(c, &mut p, false)?;
+            spec.pairs.push(p);
+        } else {
+            let mut e = Exclude {
+                line: c.line,
+                ..Exclude::default()
+            };
+            text(c, "name", &mut e.name);
+            read_text(c, "body1", &mut e.body1)?;
+            read_text(c, "body2", &mut e.body2)?;
+            spec.excludes.push(e);
+        }
+    }
+    Ok(())
+}
+
 fn unsupported(el: &Element, what: &str) -> String {
     xerr(
         el,
@@ -534,6 +580,7 @@ fn read_default(spec: &mut ModelSpec, el: &Element, parent: Option<usize>) -> R<
             "site" => one_site(c, &mut d.site)?,
             "camera" => one_camera(c, &mut d.camera)?,
             "light" => one_light(c, &mut d.light)?,
+            "pair" => one_pair(c, &mut d.pair, true)?,
             n if ACTUATORS.contains(&n) => one_actuator(c, &mut d.actuator)?,
             "default" => {}
             other => return Err(unsupported(c, other)),
@@ -975,6 +1022,9 @@ pub fn read(root: &Element) -> R<ModelSpec> {
         spec.world = world;
         r?;
     }
+    for s in sections("contact") {
+        read_contact(&mut spec, s)?;
+    }
     for s in sections("actuator") {
         for a in &s.children {
             let def = class_of(&spec, a)?.unwrap_or(0);
@@ -989,7 +1039,7 @@ pub fn read(root: &Element) -> R<ModelSpec> {
     for s in sections("keyframe") {
         read_keys(&mut spec, s)?;
     }
-    const KNOWN: [&str; 9] = [
+    const KNOWN: [&str; 10] = [
         "compiler",
         "option",
         "size",
@@ -997,6 +1047,7 @@ pub fn read(root: &Element) -> R<ModelSpec> {
         "statistic",
         "default",
         "worldbody",
+        "contact",
         "actuator",
         "keyframe",
     ];
