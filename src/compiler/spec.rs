@@ -380,6 +380,24 @@ pub struct Exclude {
     pub body2: String,
 }
 
+/// A sensor (`<sensor>` child); types and object kinds as mjtSensor / mjtObj values.
+#[derive(Debug, Clone, Default)]
+pub struct Sensor {
+    pub name: String,
+    pub kind: i32,
+    pub objtype: i32,
+    pub objname: String,
+    pub reftype: i32,
+    pub refname: String,
+    pub cutoff: f64,
+    pub noise: f64,
+    pub user: Vec<f64>,
+    /// user sensors only
+    pub dim: i32,
+    pub needstage: i32,
+    pub datatype: i32,
+}
+
 /// A default class: the values new elements of each kind start from.
 #[derive(Debug, Clone, Default)]
 pub struct DefaultClass {
@@ -520,6 +538,7 @@ pub struct ModelSpec {
     pub actuators: Vec<Actuator>,
     pub pairs: Vec<Pair>,
     pub excludes: Vec<Exclude>,
+    pub sensors: Vec<Sensor>,
     pub keys: Vec<Key>,
 }
 
@@ -552,6 +571,7 @@ impl Default for ModelSpec {
             actuators: Vec::new(),
             pairs: Vec::new(),
             excludes: Vec::new(),
+            sensors: Vec::new(),
             keys: Vec::new(),
         }
     }

@@ -64,6 +64,7 @@ pub struct Compiled {
     /// (name, body signature), sorted by signature
     excludes: Vec<(String, i32)>,
     actuators: Vec<Actuator>,
+    sensors: Vec<CSensor>,
     keys: Vec<Key>,
     trnid: Vec<[i32; 2]>,
     nuser: [usize; 8],
@@ -227,6 +228,8 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
         actuators.iter().map(|a| (a.name.as_str(), a.line)),
         "actuator",
     )?;
+    let sensors = spec.sensors;
+    check_names(sensors.iter().map(|s| (s.name.as_str(), -1)), "sensor")?;
     check_names(keys.iter().map(|k| (k.name.as_str(), -1)), "key")?;
 
     let n = &spec.nuser;
@@ -238,7 +241,7 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
         user_len(cameras.iter().map(|c| c.0.user.len()), n[4]),
         user_len(std::iter::empty(), n[5]),
         user_len(actuators.iter().map(|a| a.user.len()), n[6]),
-        user_len(std::iter::empty(), n[7]),
+        user_len(sensors.iter().map(|s| s.user.len()), n[7]),
     ];
 
     // bodies, with their geoms, joints and sites
@@ -578,6 +581,25 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
         trnid.push(ids);
     }
 
+    // sensors
+    let mut csensors = Vec::new();
+    for (id, s) in sensors.into_iter().enumerate() {
+        let find = |objtype: i32, name: &str| -> Option<usize> {
+            match objtype {
+                1 | 2 => find_body(&bodies, name),
+                3 => joints.iter().position(|j| j.spec.name == name),
+                5 => geoms.iter().position(|g| g.spec.name == name),
+                6 => sites.iter().position(|x| x.spec.name == name),
+                7 => cameras.iter().position(|c| c.0.name == name),
+                8 => lights.iter().position(|l| l.0.name == name),
+                18 => actuators.iter().position(|a| a.name == name),
+                _ => None,
+            }
+        };
+        let c = compile_sensor(s, id, nuser[7], &find, &joints)?;
+        csensors.push(c);
+    }
+
     // sizes
     h.nbody = bodies.len() as i32;
     h.njnt = joints.len() as i32;
@@ -586,6 +608,8 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
     h.ncam = cameras.len() as i32;
     h.nlight = lights.len() as i32;
     h.nkey = keys.len() as i32;
+    h.nsensor = csensors.len() as i32;
+    h.nsensordata = csensors.iter().map(|s| s.dim).sum();
     h.nq = joints.iter().map(|j| j.spec.kind.nq()).sum::<usize>() as i32;
     h.nv = joints.iter().map(|j| j.spec.kind.nv()).sum::<usize>() as i32;
     for a in &actuators {
@@ -609,6 +633,10 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
     h.npair = pairs.len() as i32;
     h.nexclude = excludes.len() as i32;
     nnames += actuators.iter().map(|a| a.name.len() + 1).sum::<usize>();
+    nnames += csensors
+        .iter()
+        .map(|s| s.spec.name.len() + 1)
+        .sum::<usize>();
     nnames += keys.iter().map(|k| k.name.len() + 1).sum::<usize>();
     h.nnames = nnames as i32;
     h.nconmax = if spec.nconmax < 0 { 100 } else { spec.nconmax };
@@ -749,6 +777,7 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
         pairs,
         excludes,
         actuators,
+        sensors: csensors,
         keys,
         trnid,
         nuser,
@@ -834,6 +863,200 @@ fn compile_light(l: &mut Light, id: usize, body: usize, bodies: &[FBody]) -> Res
     target_id(&l.target, "light", &l.name, id, l.line, body, bodies).map(|_| ())
 }
 
+/// A compiled sensor.
+struct CSensor {
+    spec: Sensor,
+    objid: i32,
+    refid: i32,
+    dim: i32,
+    datatype: i32,
+    needstage: i32,
+}
+
+fn compile_sensor(
+    mut s: Sensor,
+    id: usize,
+    nuser: usize,
+    find: &dyn Fn(i32, &str) -> Option<usize>,
+    joints: &[FJoint],
+) -> Result<CSensor, CError> {
+    let name = s.name.clone();
+    let err = |m: &str| CError::at(format!("{m} in sensor '{name}' (id = {id})"), &name, id, -1);
+    if s.user.len() > nuser {
+        return Err(err("user has more values than nuser_sensor"));
+    }
+    s.user.resize(nuser, 0.0);
+    if s.noise < 0.0 {
+        return Err(err("negative noise"));
+    }
+    if s.cutoff < 0.0 {
+        return Err(err("negative cutoff"));
+    }
+    let (mut objid, mut refid) = (-1, -1);
+    if s.objtype != 0 {
+        if s.objname.is_empty() {
+            return Err(err("missing name of sensorized object"));
+        }
+        objid = find(s.objtype, &s.objname)
+            .ok_or_else(|| err("unrecognized name of sensorized object"))? as i32;
+    } else if s.kind != 35 {
+        return Err(err("invalid type"));
+    }
+    let frame_obj = |t: i32| matches!(t, 1 | 2 | 5 | 6 | 7);
+    if s.reftype != 0 {
+        if s.refname.is_empty() {
+            return Err(err("missing name of reference frame object"));
+        }
+        refid = find(s.reftype, &s.refname)
+            .ok_or_else(|| err("unrecognized name of reference frame object"))?
+            as i32;
+        if !frame_obj(s.reftype) {
+            return Err(CError::at(
+                format!("reference frame object must be (x)body, geom, site or camera: sensor '{name}' (id = {id})"),
+                &name,
+                id,
+                -1,
+            ));
+        }
+    }
+    let attached = |what: &str| {
+        CError::at(
+            format!("sensor must be attached to {what}: sensor '{name}' (id = {id})"),
+            &name,
+            id,
+            -1,
+        )
+    };
+    let joint = |k: i32| {
+        joints
+            .get(objid.max(0) as usize)
+            .map(|j| (j.spec.kind, j.spec.limited))
+            .filter(|_| k == 3)
+    };
+    // (dim, datatype, needstage); stages: 1 pos, 2 vel, 3 acc; datatypes: 0 real, 1 positive, 2 axis, 3 quat
+    let stage3 = |k: i32, base: i32| [1, 2, 3][(k - base) as usize];
+    let (dim, datatype, needstage) = match s.kind {
+        0..=7 => {
+            if s.objtype != 6 {
+                return Err(attached("site"));
+            }
+            let (dim, dt) = if s.kind == 0 || s.kind == 7 {
+                (1, 1)
+            } else {
+                (3, 0)
+            };
+            let stage = match s.kind {
+                6 | 7 => 1,
+                2 | 3 => 2,
+                _ => 3,
+            };
+            (dim, dt, stage)
+        }
+        8 | 9 => {
+            let Some((kind, _)) = joint(s.objtype) else {
+                return Err(attached("joint"));
+            };
+            if !matches!(kind, JointType::Slide | JointType::Hinge) {
+                return Err(err("joint must be slide or hinge"));
+            }
+            (1, 0, s.kind - 7)
+        }
+        10 | 11 => {
+            if s.objtype != 17 {
+                return Err(attached("tendon"));
+            }
+            (1, 0, s.kind - 9)
+        }
+        12..=14 => {
+            if s.objtype != 18 {
+                return Err(attached("actuator"));
+            }
+            (1, 0, stage3(s.kind, 12))
+        }
+        15 | 16 => {
+            let Some((kind, _)) = joint(s.objtype) else {
+                return Err(attached("joint"));
+            };
+            if kind != JointType::Ball {
+                return Err(err("joint must be ball"));
+            }
+            if s.kind == 15 {
+                (4, 3, 1)
+            } else {
+                (3, 0, 2)
+            }
+        }
+        17..=19 => {
+            let Some((_, limited)) = joint(s.objtype) else {
+                return Err(attached("joint"));
+            };
+            if limited == 0 {
+                return Err(err("joint must be limited"));
+            }
+            (1, 0, stage3(s.kind, 17))
+        }
+        20..=22 => {
+            if s.objtype != 17 {
+                return Err(attached("tendon"));
+            }
+            (1, 0, stage3(s.kind, 20))
+        }
+        23..=31 => {
+            if !frame_obj(s.objtype) {
+                return Err(attached("(x)body, geom, site or camera"));
+            }
+            let dim = if s.kind == 24 { 4 } else { 3 };
+            let dt = match s.kind {
+                24 => 3,
+                25..=27 => 2,
+                _ => 0,
+            };
+            let stage = match s.kind {
+                30 | 31 => 3,
+                28 | 29 => 2,
+                _ => 1,
+            };
+            (dim, dt, stage)
+        }
+        32..=34 => {
+            if s.objtype != 1 {
+                return Err(attached("body"));
+            }
+            (3, 0, if s.kind == 32 { 1 } else { 2 })
+        }
+        35 => (1, 0, 1),
+        36 => {
+            if s.dim < 0 {
+                return Err(CError::at(
+                    format!("sensor dim must be positive: sensor '{name}' (id = {id})"),
+                    &name,
+                    id,
+                    -1,
+                ));
+            }
+            if s.datatype == 2 && s.dim != 3 {
+                return Err(err("datatype AXIS requires dim=3"));
+            }
+            if s.datatype == 3 && s.dim != 4 {
+                return Err(err("datatype QUATERNION requires dim=4"));
+            }
+            (s.dim, s.datatype, s.needstage)
+        }
+        _ => return Err(err("invalid type")),
+    };
+    if s.cutoff > 0.0 && (datatype == 2 || datatype == 3) {
+        return Err(err("cutoff applied to axis or quaternion datatype"));
+    }
+    Ok(CSensor {
+        spec: s,
+        objid,
+        refid,
+        dim,
+        datatype,
+        needstage,
+    })
+}
+
 fn put<T: Copy>(dst: &mut [T], i: usize, src: &[T]) {
     let n = src.len();
     dst[i * n..(i + 1) * n].copy_from_slice(src);
@@ -900,6 +1123,9 @@ impl Compiled {
         }
         for (i, a) in self.actuators.iter().enumerate() {
             name(&mut m.name_actuatoradr[i], &a.name, m.names);
+        }
+        for (i, s) in self.sensors.iter().enumerate() {
+            name(&mut m.name_sensoradr[i], &s.spec.name, m.names);
         }
         for (i, k) in self.keys.iter().enumerate() {
             name(&mut m.name_keyadr[i], &k.name, m.names);
@@ -1166,6 +1392,24 @@ impl Compiled {
             let mut user = a.user.clone();
             user.resize(nua, 0.0);
             put(m.actuator_user, i, &user);
+        }
+
+        // sensors
+        let mut adr = 0;
+        for (i, s) in self.sensors.iter().enumerate() {
+            m.sensor_type[i] = s.spec.kind;
+            m.sensor_datatype[i] = s.datatype;
+            m.sensor_needstage[i] = s.needstage;
+            m.sensor_objtype[i] = s.spec.objtype;
+            m.sensor_objid[i] = s.objid;
+            m.sensor_reftype[i] = s.spec.reftype;
+            m.sensor_refid[i] = s.refid;
+            m.sensor_dim[i] = s.dim;
+            m.sensor_cutoff[i] = s.spec.cutoff;
+            m.sensor_noise[i] = s.spec.noise;
+            put(m.sensor_user, i, &s.spec.user);
+            m.sensor_adr[i] = adr;
+            adr += s.dim;
         }
 
         // keyframes: missing entries default to qpos0, zeros, mocap body poses

@@ -527,6 +527,120 @@ fn read_contact(spec: &mut ModelSpec, el: &Element) -> R<()> {
     Ok(())
 }
 
+/// mjtObj value of an object type name (0: unknown).
+fn obj_type(name: &str) -> i32 {
+    const NAMES: [&str; 23] = [
+        "unknown", "body", "xbody", "joint", "dof", "geom", "site", "camera", "light", "mesh",
+        "skin", "hfield", "texture", "material", "pair", "exclude", "equality", "tendon",
+        "actuator", "sensor", "numeric", "text", "tuple",
+    ];
+    if name == "key" {
+        return 23;
+    }
+    NAMES.iter().position(|n| *n == name).unwrap_or(0) as i32
+}
+
+/// Sensor element names in mjtSensor order, with the attribute naming their object and its mjtObj.
+const SENSORS: [(&str, &str, i32); 34] = [
+    ("touch", "site", 6),
+    ("accelerometer", "site", 6),
+    ("velocimeter", "site", 6),
+    ("gyro", "site", 6),
+    ("force", "site", 6),
+    ("torque", "site", 6),
+    ("magnetometer", "site", 6),
+    ("rangefinder", "site", 6),
+    ("jointpos", "joint", 3),
+    ("jointvel", "joint", 3),
+    ("tendonpos", "tendon", 17),
+    ("tendonvel", "tendon", 17),
+    ("actuatorpos", "actuator", 18),
+    ("actuatorvel", "actuator", 18),
+    ("actuatorfrc", "actuator", 18),
+    ("ballquat", "joint", 3),
+    ("ballangvel", "joint", 3),
+    ("jointlimitpos", "joint", 3),
+    ("jointlimitvel", "joint", 3),
+    ("jointlimitfrc", "joint", 3),
+    ("tendonlimitpos", "tendon", 17),
+    ("tendonlimitvel", "tendon", 17),
+    ("tendonlimitfrc", "tendon", 17),
+    ("framepos", "", 0),
+    ("framequat", "", 0),
+    ("framexaxis", "", 0),
+    ("frameyaxis", "", 0),
+    ("framezaxis", "", 0),
+    ("framelinvel", "", 0),
+    ("frameangvel", "", 0),
+    ("framelinacc", "", 0),
+    ("frameangacc", "", 0),
+    ("subtreecom", "body", 1),
+    ("subtreelinvel", "body", 1),
+];
+
+fn read_sensors(spec: &mut ModelSpec, el: &Element) -> R<()> {
+    for c in &el.children {
+        let mut s = Sensor::default();
+        text(c, "name", &mut s.name);
+        num(c, "cutoff", &mut s.cutoff)?;
+        num(c, "noise", &mut s.noise)?;
+        user(c, &mut s.user)?;
+        let mut tmp = String::new();
+        if let Some(k) = SENSORS.iter().position(|x| x.0 == c.name) {
+            s.kind = k as i32;
+            let (_, attr, objtype) = SENSORS[k];
+            if attr.is_empty() {
+                read_text(c, "objtype", &mut tmp)?;
+                s.objtype = obj_type(&tmp);
+                read_text(c, "objname", &mut s.objname)?;
+                if !c.name.ends_with("acc") {
+                    if text(c, "reftype", &mut tmp) {
+                        s.reftype = obj_type(&tmp);
+                        read_text(c, "refname", &mut s.refname)?;
+                    } else if text(c, "refname", &mut tmp) {
+                        return Err(xerr(
+                            c,
+                            &format!("refname '{tmp}' given but reftype is missing"),
+                        ));
+                    }
+                }
+            } else {
+                s.objtype = objtype;
+                read_text(c, attr, &mut s.objname)?;
+            }
+        } else {
+            match c.name.as_str() {
+                "subtreeangmom" => {
+                    s.kind = 34;
+                    s.objtype = 1;
+                    read_text(c, "body", &mut s.objname)?;
+                }
+                "clock" => s.kind = 35,
+                _ => {
+                    s.kind = 36;
+                    read_text(c, "objtype", &mut tmp)?;
+                    s.objtype = obj_type(&tmp);
+                    read_text(c, "objname", &mut s.objname)?;
+                    if c.attr("dim").is_none() {
+                        return Err(xerr(c, "required attribute missing: 'dim'"));
+                    }
+                    int(c, "dim", &mut s.dim)?;
+                    let stage = ["none", "pos", "vel", "acc"];
+                    s.needstage = keyword(c, "needstage", &stage)?
+                        .ok_or_else(|| xerr(c, "required attribute missing: 'needstage'"))?
+                        as i32;
+                    let dt = ["real", "positive", "axis", "quaternion"];
+                    s.datatype = keyword(c, "datatype", &dt)?
+                        .ok_or_else(|| xerr(c, "required attribute missing: 'datatype'"))?
+                        as i32;
+                }
+            }
+        }
+        spec.sensors.push(s);
+    }
+    Ok(())
+}
+
 fn unsupported(el: &Element, what: &str) -> String {
     xerr(
         el,
@@ -1036,10 +1150,13 @@ pub fn read(root: &Element) -> R<ModelSpec> {
             spec.actuators.push(act);
         }
     }
+    for s in sections("sensor") {
+        read_sensors(&mut spec, s)?;
+    }
     for s in sections("keyframe") {
         read_keys(&mut spec, s)?;
     }
-    const KNOWN: [&str; 10] = [
+    const KNOWN: [&str; 11] = [
         "compiler",
         "option",
         "size",
@@ -1049,6 +1166,7 @@ pub fn read(root: &Element) -> R<ModelSpec> {
         "worldbody",
         "contact",
         "actuator",
+        "sensor",
         "keyframe",
     ];
     for c in &root.children {
