@@ -398,6 +398,39 @@ pub struct Sensor {
     pub datatype: i32,
 }
 
+/// Equality constraint; `kind` as mjtEq.
+#[derive(Debug, Clone)]
+pub struct Equality {
+    pub name: String,
+    pub line: Line,
+    pub kind: i32,
+    pub name1: String,
+    pub name2: String,
+    pub active: bool,
+    pub solref: [f64; 2],
+    pub solimp: [f64; 5],
+    pub data: [f64; 11],
+}
+
+impl Default for Equality {
+    fn default() -> Self {
+        let mut data = [0.0; 11];
+        data[1] = 1.0;
+        data[10] = 1.0;
+        Equality {
+            name: String::new(),
+            line: -1,
+            kind: 0,
+            name1: String::new(),
+            name2: String::new(),
+            active: true,
+            solref: default_solref(),
+            solimp: default_solimp(),
+            data,
+        }
+    }
+}
+
 /// A default class: the values new elements of each kind start from.
 #[derive(Debug, Clone, Default)]
 pub struct DefaultClass {
@@ -409,6 +442,7 @@ pub struct DefaultClass {
     pub camera: Camera,
     pub light: Light,
     pub pair: Pair,
+    pub equality: Equality,
     pub actuator: Actuator,
 }
 
@@ -538,6 +572,7 @@ pub struct ModelSpec {
     pub actuators: Vec<Actuator>,
     pub pairs: Vec<Pair>,
     pub excludes: Vec<Exclude>,
+    pub equalities: Vec<Equality>,
     pub sensors: Vec<Sensor>,
     pub keys: Vec<Key>,
 }
@@ -571,6 +606,7 @@ impl Default for ModelSpec {
             actuators: Vec::new(),
             pairs: Vec::new(),
             excludes: Vec::new(),
+            equalities: Vec::new(),
             sensors: Vec::new(),
             keys: Vec::new(),
         }

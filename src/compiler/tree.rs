@@ -63,6 +63,8 @@ pub struct Compiled {
     pairs: Vec<(Pair, [i32; 2], i32)>,
     /// (name, body signature), sorted by signature
     excludes: Vec<(String, i32)>,
+    /// (constraint, object ids)
+    equalities: Vec<(Equality, [i32; 2])>,
     actuators: Vec<Actuator>,
     sensors: Vec<CSensor>,
     keys: Vec<Key>,
@@ -223,6 +225,10 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
     check_names(
         spec.excludes.iter().map(|e| (e.name.as_str(), e.line)),
         "exclude",
+    )?;
+    check_names(
+        spec.equalities.iter().map(|e| (e.name.as_str(), e.line)),
+        "equality",
     )?;
     check_names(
         actuators.iter().map(|a| (a.name.as_str(), a.line)),
@@ -449,6 +455,64 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
     pairs.sort_by_key(|p| p.2);
     excludes.sort_by_key(|e| e.1);
 
+    // equality constraints
+    let mut equalities = Vec::new();
+    for (id, mut e) in spec.equalities.into_iter().enumerate() {
+        let name = e.name.clone();
+        let err = |m: String| CError::at(m, &name, id, e.line);
+        let find = |n: &str| -> Option<usize> {
+            match e.kind {
+                0 | 1 => find_body(&bodies, n),
+                2 => joints.iter().position(|j| j.spec.name == n),
+                _ => None,
+            }
+        };
+        if !(0..=3).contains(&e.kind) {
+            return Err(err(format!(
+                "invalid type in equality constraint '{name}' (id = {id})'"
+            )));
+        }
+        let o1 = find(&e.name1).ok_or_else(|| {
+            err(format!(
+                "unknown element '{}' in equality constraint {id}",
+                e.name1
+            ))
+        })?;
+        let mut o2 = -1i32;
+        if !e.name2.is_empty() {
+            o2 = find(&e.name2).ok_or_else(|| {
+                err(format!(
+                    "unknown element '{}' in equality constraint {id}",
+                    e.name2
+                ))
+            })? as i32;
+        }
+        if e.kind <= 1 && o2 == -1 {
+            o2 = 0;
+        }
+        if o1 as i32 == o2 {
+            return Err(err(format!(
+                "element '{}' is repeated in equality constraint {id}",
+                e.name1
+            )));
+        }
+        if e.kind == 2 {
+            let scalar = |k: JointType| matches!(k, JointType::Hinge | JointType::Slide);
+            let k2 = if o2 >= 0 {
+                joints[o2 as usize].spec.kind
+            } else {
+                JointType::Hinge
+            };
+            if !scalar(joints[o1].spec.kind) || !scalar(k2) {
+                return Err(err(format!(
+                    "only HINGE and SLIDE joint allowed in constraint '{name}' (id = {id})"
+                )));
+            }
+        }
+        let _ = &mut e;
+        equalities.push((e, [o1 as i32, o2]));
+    }
+
     // actuators
     let mut trnid = Vec::new();
     for (id, a) in actuators.iter_mut().enumerate() {
@@ -631,6 +695,12 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
     nnames += pairs.iter().map(|p| p.0.name.len() + 1).sum::<usize>();
     nnames += excludes.iter().map(|e| e.0.len() + 1).sum::<usize>();
     h.npair = pairs.len() as i32;
+    h.neq = equalities.len() as i32;
+    h.nemax = equalities
+        .iter()
+        .map(|e| [3, 7, 1, 1][e.0.kind as usize])
+        .sum();
+    nnames += equalities.iter().map(|e| e.0.name.len() + 1).sum::<usize>();
     h.nexclude = excludes.len() as i32;
     nnames += actuators.iter().map(|a| a.name.len() + 1).sum::<usize>();
     nnames += csensors
@@ -776,6 +846,7 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
         lights,
         pairs,
         excludes,
+        equalities,
         actuators,
         sensors: csensors,
         keys,
@@ -1121,6 +1192,9 @@ impl Compiled {
         for (i, e) in self.excludes.iter().enumerate() {
             name(&mut m.name_excludeadr[i], &e.0, m.names);
         }
+        for (i, e) in self.equalities.iter().enumerate() {
+            name(&mut m.name_eqadr[i], &e.0.name, m.names);
+        }
         for (i, a) in self.actuators.iter().enumerate() {
             name(&mut m.name_actuatoradr[i], &a.name, m.names);
         }
@@ -1367,6 +1441,15 @@ impl Compiled {
         }
         for (i, e) in self.excludes.iter().enumerate() {
             m.exclude_signature[i] = e.1;
+        }
+        for (i, (e, ids)) in self.equalities.iter().enumerate() {
+            m.eq_type[i] = e.kind;
+            m.eq_obj1id[i] = ids[0];
+            m.eq_obj2id[i] = ids[1];
+            m.eq_active[i] = e.active as u8;
+            put(m.eq_solref, i, &e.solref);
+            put(m.eq_solimp, i, &e.solimp);
+            put(m.eq_data, i, &e.data);
         }
 
         // actuators

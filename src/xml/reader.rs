@@ -641,6 +641,53 @@ fn read_sensors(spec: &mut ModelSpec, el: &Element) -> R<()> {
     Ok(())
 }
 
+fn one_equality(el: &Element, e: &mut Equality, in_default: bool) -> R<()> {
+    let kinds = ["connect", "weld", "joint", "tendon", "distance"];
+    e.kind = kinds
+        .iter()
+        .position(|k| *k == el.name)
+        .map_or(-1, |k| k as i32);
+    if !in_default {
+        text(el, "name", &mut e.name);
+        let (a1, a2) = match e.kind {
+            0 | 1 => ("body1", "body2"),
+            2 => ("joint1", "joint2"),
+            3 => ("tendon1", "tendon2"),
+            4 => {
+                return Err(xerr(
+                    el,
+                    "support for distance equality contraints was removed in MuJoCo 2.2.2",
+                ))
+            }
+            _ => return Err(xerr(el, "unrecognized equality constraint type")),
+        };
+        read_text(el, a1, &mut e.name1)?;
+        text(el, a2, &mut e.name2);
+        match e.kind {
+            0 => {
+                read_nums(el, "anchor", &mut e.data[..3], true, true)?;
+            }
+            1 => {
+                nums(el, "relpose", &mut e.data[3..10])?;
+                num(el, "torquescale", &mut e.data[10])?;
+                if !nums(el, "anchor", &mut e.data[..3])? {
+                    e.data[..3].fill(0.0);
+                }
+            }
+            _ => {
+                nums(el, "polycoef", &mut e.data[..5])?;
+            }
+        }
+    }
+    if let Some(b) = boolean(el, "active")? {
+        e.active = b;
+    }
+    some_nums(el, "solref", &mut e.solref)?;
+    some_nums(el, "solimp", &mut e.solimp)?;
+    e.line = el.line;
+    Ok(())
+}
+
 fn unsupported(el: &Element, what: &str) -> String {
     xerr(
         el,
@@ -695,6 +742,7 @@ fn read_default(spec: &mut ModelSpec, el: &Element, parent: Option<usize>) -> R<
             "camera" => one_camera(c, &mut d.camera)?,
             "light" => one_light(c, &mut d.light)?,
             "pair" => one_pair(c, &mut d.pair, true)?,
+            "equality" => one_equality(c, &mut d.equality, true)?,
             n if ACTUATORS.contains(&n) => one_actuator(c, &mut d.actuator)?,
             "default" => {}
             other => return Err(unsupported(c, other)),
@@ -1139,6 +1187,14 @@ pub fn read(root: &Element) -> R<ModelSpec> {
     for s in sections("contact") {
         read_contact(&mut spec, s)?;
     }
+    for s in sections("equality") {
+        for c in &s.children {
+            let def = class_of(&spec, c)?.unwrap_or(0);
+            let mut e = spec.defaults[def].equality.clone();
+            one_equality(c, &mut e, false)?;
+            spec.equalities.push(e);
+        }
+    }
     for s in sections("actuator") {
         for a in &s.children {
             let def = class_of(&spec, a)?.unwrap_or(0);
@@ -1156,7 +1212,7 @@ pub fn read(root: &Element) -> R<ModelSpec> {
     for s in sections("keyframe") {
         read_keys(&mut spec, s)?;
     }
-    const KNOWN: [&str; 11] = [
+    const KNOWN: [&str; 12] = [
         "compiler",
         "option",
         "size",
@@ -1165,6 +1221,7 @@ pub fn read(root: &Element) -> R<ModelSpec> {
         "default",
         "worldbody",
         "contact",
+        "equality",
         "actuator",
         "sensor",
         "keyframe",
