@@ -431,6 +431,65 @@ impl Default for Equality {
     }
 }
 
+/// One element of a tendon path; `kind` as mjtWrap (sphere stands for any geom until compiled).
+#[derive(Debug, Clone, Default)]
+pub struct Wrap {
+    pub kind: i32,
+    pub name: String,
+    pub sidesite: String,
+    pub prm: f64,
+    pub line: Line,
+}
+
+#[derive(Debug, Clone)]
+pub struct Tendon {
+    pub name: String,
+    pub line: Line,
+    pub group: i32,
+    pub material: String,
+    pub limited: i32,
+    pub width: f64,
+    pub solref_limit: [f64; 2],
+    pub solimp_limit: [f64; 5],
+    pub solref_friction: [f64; 2],
+    pub solimp_friction: [f64; 5],
+    pub range: [f64; 2],
+    pub margin: f64,
+    pub stiffness: f64,
+    pub damping: f64,
+    pub frictionloss: f64,
+    pub springlength: f64,
+    pub rgba: [f32; 4],
+    pub user: Vec<f64>,
+    pub path: Vec<Wrap>,
+}
+
+impl Default for Tendon {
+    fn default() -> Self {
+        Tendon {
+            name: String::new(),
+            line: -1,
+            group: 0,
+            material: String::new(),
+            limited: 2,
+            width: 0.003,
+            solref_limit: default_solref(),
+            solimp_limit: default_solimp(),
+            solref_friction: default_solref(),
+            solimp_friction: default_solimp(),
+            range: [0.0; 2],
+            margin: 0.0,
+            stiffness: 0.0,
+            damping: 0.0,
+            frictionloss: 0.0,
+            springlength: -1.0,
+            rgba: [0.5, 0.5, 0.5, 1.0],
+            user: Vec::new(),
+            path: Vec::new(),
+        }
+    }
+}
+
 /// A default class: the values new elements of each kind start from.
 #[derive(Debug, Clone, Default)]
 pub struct DefaultClass {
@@ -443,6 +502,7 @@ pub struct DefaultClass {
     pub light: Light,
     pub pair: Pair,
     pub equality: Equality,
+    pub tendon: Tendon,
     pub actuator: Actuator,
 }
 
@@ -573,6 +633,7 @@ pub struct ModelSpec {
     pub pairs: Vec<Pair>,
     pub excludes: Vec<Exclude>,
     pub equalities: Vec<Equality>,
+    pub tendons: Vec<Tendon>,
     pub sensors: Vec<Sensor>,
     pub keys: Vec<Key>,
 }
@@ -607,6 +668,7 @@ impl Default for ModelSpec {
             pairs: Vec::new(),
             excludes: Vec::new(),
             equalities: Vec::new(),
+            tendons: Vec::new(),
             sensors: Vec::new(),
             keys: Vec::new(),
         }

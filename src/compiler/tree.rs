@@ -65,6 +65,7 @@ pub struct Compiled {
     excludes: Vec<(String, i32)>,
     /// (constraint, object ids)
     equalities: Vec<(Equality, [i32; 2])>,
+    tendons: Vec<CTendon>,
     actuators: Vec<Actuator>,
     sensors: Vec<CSensor>,
     keys: Vec<Key>,
@@ -231,6 +232,10 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
         "equality",
     )?;
     check_names(
+        spec.tendons.iter().map(|t| (t.name.as_str(), t.line)),
+        "tendon",
+    )?;
+    check_names(
         actuators.iter().map(|a| (a.name.as_str(), a.line)),
         "actuator",
     )?;
@@ -245,7 +250,7 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
         user_len(gspecs.iter().map(|g| g.user.len()), n[2]),
         user_len(sspecs.iter().map(|s| s.0.user.len()), n[3]),
         user_len(cameras.iter().map(|c| c.0.user.len()), n[4]),
-        user_len(std::iter::empty(), n[5]),
+        user_len(spec.tendons.iter().map(|t| t.user.len()), n[5]),
         user_len(actuators.iter().map(|a| a.user.len()), n[6]),
         user_len(sensors.iter().map(|s| s.user.len()), n[7]),
     ];
@@ -464,6 +469,7 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
             match e.kind {
                 0 | 1 => find_body(&bodies, n),
                 2 => joints.iter().position(|j| j.spec.name == n),
+                3 => spec.tendons.iter().position(|t| t.name == n),
                 _ => None,
             }
         };
@@ -511,6 +517,13 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
         }
         let _ = &mut e;
         equalities.push((e, [o1 as i32, o2]));
+    }
+
+    // tendons
+    let mut tendons = Vec::new();
+    for (id, t) in spec.tendons.into_iter().enumerate() {
+        let wraps = compile_tendon(&t, id, nuser[5], &joints, &geoms, &sites, opts.autolimits)?;
+        tendons.push(wraps);
     }
 
     // actuators
@@ -631,11 +644,13 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
                 find_body(&bodies, &a.target).ok_or_else(|| missing(&a.target))? as i32,
                 -1,
             ],
-            3 => {
-                return Err(aerr(
-                    "tendon transmissions are not supported by this compiler yet".into(),
-                ))
-            }
+            3 => [
+                tendons
+                    .iter()
+                    .position(|t| t.spec.name == a.target)
+                    .ok_or_else(|| missing(&a.target))? as i32,
+                -1,
+            ],
             _ => {
                 return Err(aerr(format!(
                     "invalid transmission type in actuator '{name}' (id = {id})"
@@ -655,12 +670,13 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
                 5 => geoms.iter().position(|g| g.spec.name == name),
                 6 => sites.iter().position(|x| x.spec.name == name),
                 7 => cameras.iter().position(|c| c.0.name == name),
+                17 => tendons.iter().position(|t| t.spec.name == name),
                 8 => lights.iter().position(|l| l.0.name == name),
                 18 => actuators.iter().position(|a| a.name == name),
                 _ => None,
             }
         };
-        let c = compile_sensor(s, id, nuser[7], &find, &joints)?;
+        let c = compile_sensor(s, id, nuser[7], &find, &joints, &tendons)?;
         csensors.push(c);
     }
 
@@ -696,6 +712,9 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
     nnames += excludes.iter().map(|e| e.0.len() + 1).sum::<usize>();
     h.npair = pairs.len() as i32;
     h.neq = equalities.len() as i32;
+    h.ntendon = tendons.len() as i32;
+    h.nwrap = tendons.iter().map(|t| t.wraps.len() as i32).sum();
+    nnames += tendons.iter().map(|t| t.spec.name.len() + 1).sum::<usize>();
     h.nemax = equalities
         .iter()
         .map(|e| [3, 7, 1, 1][e.0.kind as usize])
@@ -847,6 +866,7 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
         pairs,
         excludes,
         equalities,
+        tendons,
         actuators,
         sensors: csensors,
         keys,
@@ -934,6 +954,180 @@ fn compile_light(l: &mut Light, id: usize, body: usize, bodies: &[FBody]) -> Res
     target_id(&l.target, "light", &l.name, id, l.line, body, bodies).map(|_| ())
 }
 
+/// A compiled tendon: its description (limits resolved) and path as (mjtWrap, object id, prm).
+struct CTendon {
+    spec: Tendon,
+    wraps: Vec<(i32, i32, f64)>,
+}
+
+fn compile_tendon(
+    t: &Tendon,
+    id: usize,
+    nuser: usize,
+    joints: &[FJoint],
+    geoms: &[FGeom],
+    sites: &[FSite],
+    autolimits: bool,
+) -> Result<CTendon, CError> {
+    let name = t.name.as_str();
+    let err = |m: String| CError::at(m, name, id, t.line);
+    if t.user.len() > nuser {
+        return Err(err(format!(
+            "user has more values than nuser_tendon in tendon '{name}' (id = {id})"
+        )));
+    }
+    if !t.material.is_empty() {
+        return Err(err(
+            "tendon materials are not supported by this compiler yet".into(),
+        ));
+    }
+    let sz = t.path.len();
+    if sz == 0 {
+        return Err(err(format!(
+            "tendon '{name}' (id = {id}): path cannot be empty"
+        )));
+    }
+    let spatial = t.path[0].kind != 1;
+    if spatial && sz < 2 {
+        return Err(err(format!(
+            "tendon '{name}' (id = {id}): spatial path must contain at least two objects"
+        )));
+    }
+    if spatial && t.width <= 0.0 {
+        return Err(err(format!(
+            "tendon '{name}' (id = {id}) must have positive width"
+        )));
+    }
+    let mut wraps = Vec::new();
+    for (k, w) in t.path.iter().enumerate() {
+        let werr = |m: String| CError::at(m, &w.name, k, w.line);
+        let find_site = |n: &str| sites.iter().position(|s| s.spec.name == n);
+        let wrap = match w.kind {
+            1 => {
+                let j = joints.iter().position(|j| j.spec.name == w.name);
+                let j = j.ok_or_else(|| {
+                    werr(format!(
+                        "joint '{}' not found in tendon {id}, wrap {k}",
+                        w.name
+                    ))
+                })?;
+                (1, j as i32, w.prm)
+            }
+            4 => {
+                let g = geoms.iter().position(|g| g.spec.name == w.name);
+                let g = g.ok_or_else(|| {
+                    werr(format!(
+                        "geom '{}' not found in tendon {id}, wrap {k}",
+                        w.name
+                    ))
+                })?;
+                let kind = match geoms[g].spec.kind {
+                    CYLINDER => 5,
+                    SPHERE => 4,
+                    _ => {
+                        let m = format!(
+                            "geom '{}' in tendon {id}, wrap {k} is not sphere or cylinder",
+                            w.name
+                        );
+                        return Err(werr(m));
+                    }
+                };
+                let mut side = -1;
+                if !w.sidesite.is_empty() {
+                    let s = find_site(&w.sidesite).ok_or_else(|| {
+                        werr(format!(
+                            "side site '{}' not found in tendon {id}, wrap {k}",
+                            w.sidesite
+                        ))
+                    })?;
+                    side = s as i32;
+                }
+                (kind, g as i32, side as f64)
+            }
+            2 => {
+                if w.prm < 0.0 {
+                    return Err(werr(format!(
+                        "pulley has negative divisor in tendon {id}, wrap {k}"
+                    )));
+                }
+                (2, -1, w.prm)
+            }
+            _ => {
+                let s = find_site(&w.name)
+                    .ok_or_else(|| werr(format!("site '{}' not found in wrap {k}", w.name)))?;
+                (3, s as i32, w.prm)
+            }
+        };
+        wraps.push(wrap);
+    }
+    for i in 0..sz {
+        let kind = wraps[i].0;
+        let prev = if i > 0 { wraps[i - 1].0 } else { -1 };
+        let next = if i + 1 < sz { wraps[i + 1].0 } else { -1 };
+        if !spatial {
+            if kind != 1 {
+                return Err(err(format!(
+                    "tendon '{name}' (id = {id}): spatial object found in fixed path at pos {i}"
+                )));
+            }
+            continue;
+        }
+        match kind {
+            2 => {
+                if prev == 2 {
+                    return Err(err(format!(
+                        "tendon '{name}' (id = {id}): consequtive pulleys (pos {i})"
+                    )));
+                }
+                if i == sz - 1 {
+                    return Err(err(format!(
+                        "tendon '{name}' (id = {id}): path ends with pulley"
+                    )));
+                }
+            }
+            3 => {
+                if (i == 0 || prev == 2) && (i == sz - 1 || next == 2) {
+                    return Err(err(format!(
+                        "tendon '{name}' (id = {id}): site {i} needs a neighbor that is not a pulley"
+                    )));
+                }
+                if next == 3 && wraps[i].1 == wraps[i + 1].1 {
+                    return Err(err(format!(
+                        "tendon '{name}' (id = {id}): site {i} is repeated"
+                    )));
+                }
+            }
+            4 | 5 => {
+                if prev != 3 || next != 3 {
+                    return Err(err(format!(
+                        "tendon '{name}' (id = {id}): geom at pos {i} not bracketed by sites"
+                    )));
+                }
+            }
+            _ => {
+                return Err(err(format!(
+                    "tendon '{name} (id = {id})': joint wrap found in spatial path at pos {i}"
+                )));
+            }
+        }
+    }
+    let mut spec = t.clone();
+    if spec.limited == 2 {
+        let hasrange = !(spec.range[0] == 0.0 && spec.range[1] == 0.0);
+        if !autolimits && hasrange {
+            return Err(err(limited_msg("tendon", "")));
+        }
+        spec.limited = hasrange as i32;
+    }
+    if spec.range[0] >= spec.range[1] && spec.limited != 0 {
+        return Err(err(format!(
+            "invalid limits in tendon '{name} (id = {id})'"
+        )));
+    }
+    spec.user.resize(nuser, 0.0);
+    Ok(CTendon { spec, wraps })
+}
+
 /// A compiled sensor.
 struct CSensor {
     spec: Sensor,
@@ -950,6 +1144,7 @@ fn compile_sensor(
     nuser: usize,
     find: &dyn Fn(i32, &str) -> Option<usize>,
     joints: &[FJoint],
+    tendons: &[CTendon],
 ) -> Result<CSensor, CError> {
     let name = s.name.clone();
     let err = |m: &str| CError::at(format!("{m} in sensor '{name}' (id = {id})"), &name, id, -1);
@@ -1069,6 +1264,9 @@ fn compile_sensor(
         20..=22 => {
             if s.objtype != 17 {
                 return Err(attached("tendon"));
+            }
+            if tendons[objid as usize].spec.limited == 0 {
+                return Err(err("tendon must be limited"));
             }
             (1, 0, stage3(s.kind, 20))
         }
@@ -1194,6 +1392,9 @@ impl Compiled {
         }
         for (i, e) in self.equalities.iter().enumerate() {
             name(&mut m.name_eqadr[i], &e.0.name, m.names);
+        }
+        for (i, t) in self.tendons.iter().enumerate() {
+            name(&mut m.name_tendonadr[i], &t.spec.name, m.names);
         }
         for (i, a) in self.actuators.iter().enumerate() {
             name(&mut m.name_actuatoradr[i], &a.name, m.names);
@@ -1450,6 +1651,34 @@ impl Compiled {
             put(m.eq_solref, i, &e.solref);
             put(m.eq_solimp, i, &e.solimp);
             put(m.eq_data, i, &e.data);
+        }
+        let mut adr = 0;
+        for (i, t) in self.tendons.iter().enumerate() {
+            let s = &t.spec;
+            m.tendon_adr[i] = adr as i32;
+            m.tendon_num[i] = t.wraps.len() as i32;
+            m.tendon_matid[i] = -1;
+            m.tendon_group[i] = s.group;
+            m.tendon_limited[i] = s.limited as u8;
+            m.tendon_width[i] = s.width;
+            put(m.tendon_solref_lim, i, &s.solref_limit);
+            put(m.tendon_solimp_lim, i, &s.solimp_limit);
+            put(m.tendon_solref_fri, i, &s.solref_friction);
+            put(m.tendon_solimp_fri, i, &s.solimp_friction);
+            put(m.tendon_range, i, &s.range);
+            m.tendon_margin[i] = s.margin;
+            m.tendon_stiffness[i] = s.stiffness;
+            m.tendon_damping[i] = s.damping;
+            m.tendon_frictionloss[i] = s.frictionloss;
+            m.tendon_lengthspring[i] = s.springlength;
+            put(m.tendon_user, i, &s.user);
+            put(m.tendon_rgba, i, &s.rgba);
+            for (k, w) in t.wraps.iter().enumerate() {
+                m.wrap_type[adr + k] = w.0;
+                m.wrap_objid[adr + k] = w.1;
+                m.wrap_prm[adr + k] = w.2;
+            }
+            adr += t.wraps.len();
         }
 
         // actuators

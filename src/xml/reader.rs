@@ -688,6 +688,72 @@ fn one_equality(el: &Element, e: &mut Equality, in_default: bool) -> R<()> {
     Ok(())
 }
 
+fn one_tendon(el: &Element, t: &mut Tendon) -> R<()> {
+    text(el, "name", &mut t.name);
+    int(el, "group", &mut t.group)?;
+    text(el, "material", &mut t.material);
+    tf_auto(el, "limited", &mut t.limited)?;
+    num(el, "width", &mut t.width)?;
+    some_nums(el, "solreflimit", &mut t.solref_limit)?;
+    some_nums(el, "solimplimit", &mut t.solimp_limit)?;
+    some_nums(el, "solreffriction", &mut t.solref_friction)?;
+    some_nums(el, "solimpfriction", &mut t.solimp_friction)?;
+    nums(el, "range", &mut t.range)?;
+    num(el, "margin", &mut t.margin)?;
+    num(el, "stiffness", &mut t.stiffness)?;
+    num(el, "damping", &mut t.damping)?;
+    num(el, "frictionloss", &mut t.frictionloss)?;
+    num(el, "springlength", &mut t.springlength)?;
+    rgba(el, &mut t.rgba)?;
+    user(el, &mut t.user)?;
+    t.line = el.line;
+    Ok(())
+}
+
+fn read_tendons(spec: &mut ModelSpec, el: &Element) -> R<()> {
+    for c in &el.children {
+        let def = class_of(spec, c)?.unwrap_or(0);
+        let mut t = spec.defaults[def].tendon.clone();
+        one_tendon(c, &mut t)?;
+        for w in &c.children {
+            let mut wrap = Wrap {
+                line: w.line,
+                ..Wrap::default()
+            };
+            match w.name.as_str() {
+                "site" => {
+                    wrap.kind = 3;
+                    read_text(w, "site", &mut wrap.name)?;
+                }
+                "geom" => {
+                    wrap.kind = 4;
+                    read_text(w, "geom", &mut wrap.name)?;
+                    text(w, "sidesite", &mut wrap.sidesite);
+                }
+                "pulley" => {
+                    wrap.kind = 2;
+                    read_nums(
+                        w,
+                        "divisor",
+                        std::slice::from_mut(&mut wrap.prm),
+                        true,
+                        true,
+                    )?;
+                }
+                "joint" => {
+                    wrap.kind = 1;
+                    read_text(w, "joint", &mut wrap.name)?;
+                    read_nums(w, "coef", std::slice::from_mut(&mut wrap.prm), true, true)?;
+                }
+                _ => return Err(xerr(w, "unknown wrap type")),
+            }
+            t.path.push(wrap);
+        }
+        spec.tendons.push(t);
+    }
+    Ok(())
+}
+
 fn unsupported(el: &Element, what: &str) -> String {
     xerr(
         el,
@@ -743,6 +809,7 @@ fn read_default(spec: &mut ModelSpec, el: &Element, parent: Option<usize>) -> R<
             "light" => one_light(c, &mut d.light)?,
             "pair" => one_pair(c, &mut d.pair, true)?,
             "equality" => one_equality(c, &mut d.equality, true)?,
+            "tendon" => one_tendon(c, &mut d.tendon)?,
             n if ACTUATORS.contains(&n) => one_actuator(c, &mut d.actuator)?,
             "default" => {}
             other => return Err(unsupported(c, other)),
@@ -1195,6 +1262,9 @@ pub fn read(root: &Element) -> R<ModelSpec> {
             spec.equalities.push(e);
         }
     }
+    for s in sections("tendon") {
+        read_tendons(&mut spec, s)?;
+    }
     for s in sections("actuator") {
         for a in &s.children {
             let def = class_of(&spec, a)?.unwrap_or(0);
@@ -1212,7 +1282,7 @@ pub fn read(root: &Element) -> R<ModelSpec> {
     for s in sections("keyframe") {
         read_keys(&mut spec, s)?;
     }
-    const KNOWN: [&str; 12] = [
+    const KNOWN: [&str; 13] = [
         "compiler",
         "option",
         "size",
@@ -1222,6 +1292,7 @@ pub fn read(root: &Element) -> R<ModelSpec> {
         "worldbody",
         "contact",
         "equality",
+        "tendon",
         "actuator",
         "sensor",
         "keyframe",
