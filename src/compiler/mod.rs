@@ -6,6 +6,7 @@
 pub mod frame;
 pub mod objects;
 pub mod spec;
+pub mod texture;
 mod tree;
 
 use crate::abi::view::{EngineError, ModelMut};

@@ -133,6 +133,7 @@ pub struct Geom {
     pub fluid_coefs: [f64; 5],
     /// Attributes the compiler does not handle yet (material, mesh, hfield, shellinertia).
     pub unsupported: Option<&'static str>,
+    pub material: String,
     pub user: Vec<f64>,
 }
 
@@ -164,6 +165,7 @@ impl Default for Geom {
             fluid_switch: false,
             fluid_coefs: [0.5, 0.25, 1.5, 1.0, 1.0],
             unsupported: None,
+            material: String::new(),
             user: Vec::new(),
         }
     }
@@ -182,6 +184,7 @@ pub struct Site {
     pub fromto: [f64; 6],
     pub alt: Alt,
     pub unsupported: Option<&'static str>,
+    pub material: String,
     pub user: Vec<f64>,
 }
 
@@ -199,6 +202,7 @@ impl Default for Site {
             fromto: [NAN; 6],
             alt: Alt::default(),
             unsupported: None,
+            material: String::new(),
             user: Vec::new(),
         }
     }
@@ -490,6 +494,75 @@ impl Default for Tendon {
     }
 }
 
+/// `<texture>`; `kind` 0 2d, 1 cube, 2 skybox; `builtin` none, gradient, checker, flat;
+/// `mark` none, edge, cross, random.
+#[derive(Debug, Clone)]
+pub struct Texture {
+    pub name: String,
+    pub line: Line,
+    pub kind: i32,
+    pub builtin: i32,
+    pub mark: i32,
+    pub rgb1: [f64; 3],
+    pub rgb2: [f64; 3],
+    pub markrgb: [f64; 3],
+    pub random: f64,
+    pub width: i32,
+    pub height: i32,
+    /// file names (single or per cube face): not supported yet
+    pub files: bool,
+}
+
+impl Default for Texture {
+    fn default() -> Self {
+        Texture {
+            name: String::new(),
+            line: -1,
+            kind: 1,
+            builtin: 0,
+            mark: 0,
+            rgb1: [0.8; 3],
+            rgb2: [0.5; 3],
+            markrgb: [0.0; 3],
+            random: 0.01,
+            width: 0,
+            height: 0,
+            files: false,
+        }
+    }
+}
+
+#[derive(Debug, Clone)]
+pub struct Material {
+    pub name: String,
+    pub line: Line,
+    pub texture: String,
+    pub texuniform: bool,
+    pub texrepeat: [f32; 2],
+    pub emission: f32,
+    pub specular: f32,
+    pub shininess: f32,
+    pub reflectance: f32,
+    pub rgba: [f32; 4],
+}
+
+impl Default for Material {
+    fn default() -> Self {
+        Material {
+            name: String::new(),
+            line: -1,
+            texture: String::new(),
+            texuniform: false,
+            texrepeat: [1.0; 2],
+            emission: 0.0,
+            specular: 0.5,
+            shininess: 0.5,
+            reflectance: 0.0,
+            rgba: [1.0; 4],
+        }
+    }
+}
+
 /// A default class: the values new elements of each kind start from.
 #[derive(Debug, Clone, Default)]
 pub struct DefaultClass {
@@ -501,6 +574,7 @@ pub struct DefaultClass {
     pub camera: Camera,
     pub light: Light,
     pub pair: Pair,
+    pub material: Material,
     pub equality: Equality,
     pub tendon: Tendon,
     pub actuator: Actuator,
@@ -630,6 +704,8 @@ pub struct ModelSpec {
     pub defaults: Vec<DefaultClass>,
     pub world: Body,
     pub actuators: Vec<Actuator>,
+    pub textures: Vec<Texture>,
+    pub materials: Vec<Material>,
     pub pairs: Vec<Pair>,
     pub excludes: Vec<Exclude>,
     pub equalities: Vec<Equality>,
@@ -665,6 +741,8 @@ impl Default for ModelSpec {
             }],
             world,
             actuators: Vec::new(),
+            textures: Vec::new(),
+            materials: Vec::new(),
             pairs: Vec::new(),
             excludes: Vec::new(),
             equalities: Vec::new(),

@@ -66,6 +66,14 @@ pub struct Compiled {
     /// (constraint, object ids)
     equalities: Vec<(Equality, [i32; 2])>,
     tendons: Vec<CTendon>,
+    /// (mjtTexture, width, height, RGB bytes)
+    textures: Vec<(i32, i32, i32, Vec<u8>)>,
+    texture_names: Vec<String>,
+    materials: Vec<Material>,
+    mat_texid: Vec<i32>,
+    geom_matid: Vec<i32>,
+    site_matid: Vec<i32>,
+    tendon_matid: Vec<i32>,
     actuators: Vec<Actuator>,
     sensors: Vec<CSensor>,
     keys: Vec<Key>,
@@ -222,6 +230,14 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
         lights.iter().map(|l| (l.0.name.as_str(), l.0.line)),
         "light",
     )?;
+    check_names(
+        spec.textures.iter().map(|t| (t.name.as_str(), t.line)),
+        "texture",
+    )?;
+    check_names(
+        spec.materials.iter().map(|m| (m.name.as_str(), m.line)),
+        "material",
+    )?;
     check_names(spec.pairs.iter().map(|p| (p.name.as_str(), p.line)), "pair")?;
     check_names(
         spec.excludes.iter().map(|e| (e.name.as_str(), e.line)),
@@ -254,6 +270,89 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
         user_len(actuators.iter().map(|a| a.user.len()), n[6]),
         user_len(sensors.iter().map(|s| s.user.len()), n[7]),
     ];
+
+    // asset names, then references to assets
+    for (id, t) in spec.textures.iter().enumerate() {
+        if t.name.is_empty() && t.kind != 2 && !t.files {
+            return Err(CError::at(
+                "empty name in texture".into(),
+                &t.name,
+                id,
+                t.line,
+            ));
+        }
+    }
+    for (id, m) in spec.materials.iter().enumerate() {
+        if m.name.is_empty() {
+            return Err(CError::at(
+                "empty name in material".into(),
+                &m.name,
+                id,
+                m.line,
+            ));
+        }
+    }
+    let find_mat = |n: &str| spec.materials.iter().position(|m| m.name == n);
+    let mut geom_matid = vec![-1; gspecs.len()];
+    for (i, g) in gspecs.iter().enumerate() {
+        if !g.material.is_empty() {
+            let m = find_mat(&g.material).ok_or_else(|| {
+                CError::at(
+                    format!("material '{}' not found in geom {i}", g.material),
+                    &g.name,
+                    i,
+                    g.line,
+                )
+            })?;
+            geom_matid[i] = m as i32;
+        }
+    }
+    let mut site_matid = vec![-1; sspecs.len()];
+    for (i, (s, _)) in sspecs.iter().enumerate() {
+        if !s.material.is_empty() {
+            let m = find_mat(&s.material).ok_or_else(|| {
+                CError::at(
+                    format!("material '{}' not found in site {i}", s.material),
+                    &s.name,
+                    i,
+                    s.line,
+                )
+            })?;
+            site_matid[i] = m as i32;
+        }
+    }
+    let mut tendon_matid = vec![-1; spec.tendons.len()];
+    for (i, t) in spec.tendons.iter().enumerate() {
+        if !t.material.is_empty() {
+            let m = find_mat(&t.material).ok_or_else(|| {
+                CError::at(
+                    format!("material '{}' not found in tendon {i}", t.material),
+                    &t.name,
+                    i,
+                    t.line,
+                )
+            })?;
+            tendon_matid[i] = m as i32;
+        }
+    }
+    let mut mat_texid = vec![-1; spec.materials.len()];
+    for (i, m) in spec.materials.iter().enumerate() {
+        if !m.texture.is_empty() {
+            let t = spec
+                .textures
+                .iter()
+                .position(|t| t.name == m.texture)
+                .ok_or_else(|| {
+                    CError::at(
+                        format!("texture '{}' not found in material {i}", m.texture),
+                        &m.name,
+                        i,
+                        m.line,
+                    )
+                })?;
+            mat_texid[i] = t as i32;
+        }
+    }
 
     // bodies, with their geoms, joints and sites
     let mut geoms: Vec<Option<FGeom>> = (0..gspecs.len()).map(|_| None).collect();
@@ -414,6 +513,47 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
     }
     let geoms: Vec<FGeom> = geoms.into_iter().flatten().collect();
     let sites: Vec<FSite> = sites.into_iter().flatten().collect();
+
+    // textures (random marks draw from the C generator seeded as 2.2.2 seeds it)
+    let mut rng = super::texture::CRand::new(123);
+    let mut textures = Vec::new();
+    for (id, t) in spec.textures.iter().enumerate() {
+        let err = |m: String| CError::at(m, &t.name, id, t.line);
+        let name = &t.name;
+        if t.builtin != 0 {
+            if t.width < 1 || t.height < 1 {
+                return Err(err(format!(
+                    "Invalid width or height of builtin texture '{name}' (id {id})"
+                )));
+            }
+            let width = t.width as usize;
+            let height = if t.kind != 0 {
+                6 * width
+            } else {
+                t.height as usize
+            };
+            if width.saturating_mul(height) > (i32::MAX / 3) as usize {
+                return Err(err(format!(
+                    "Could not allocate memory for texture '{name}' (id {id})"
+                )));
+            }
+            let rgb = super::texture::builtin(t, width, height, &mut rng);
+            textures.push((t.kind, width as i32, height as i32, rgb));
+        } else if t.files {
+            return Err(err(
+                "textures from files are not supported by this compiler yet".into(),
+            ));
+        } else if t.kind == 0 {
+            return Err(err(format!(
+                "Cannot load 2D texture from separate files, texture '{name}' (id {id})"
+            )));
+        } else {
+            return Err(err(format!(
+                "No cubefiles defined in cube or skybox texture '{name}' (id {id})"
+            )));
+        }
+    }
+    let materials = spec.materials;
 
     // contact pairs and exclusions, sorted by body signature
     let signature = |b1: usize, b2: usize| (((b1 + 1) << 16) + b2 + 1) as i32;
@@ -708,6 +848,15 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
     nnames += sites.iter().map(|s| s.spec.name.len() + 1).sum::<usize>();
     nnames += cameras.iter().map(|c| c.0.name.len() + 1).sum::<usize>();
     nnames += lights.iter().map(|l| l.0.name.len() + 1).sum::<usize>();
+    nnames += spec
+        .textures
+        .iter()
+        .map(|t| t.name.len() + 1)
+        .sum::<usize>();
+    nnames += materials.iter().map(|m| m.name.len() + 1).sum::<usize>();
+    h.ntex = textures.len() as i32;
+    h.ntexdata = textures.iter().map(|t| t.3.len() as i32).sum();
+    h.nmat = materials.len() as i32;
     nnames += pairs.iter().map(|p| p.0.name.len() + 1).sum::<usize>();
     nnames += excludes.iter().map(|e| e.0.len() + 1).sum::<usize>();
     h.npair = pairs.len() as i32;
@@ -867,6 +1016,13 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
         excludes,
         equalities,
         tendons,
+        textures,
+        texture_names: spec.textures.iter().map(|t| t.name.clone()).collect(),
+        materials,
+        mat_texid,
+        geom_matid,
+        site_matid,
+        tendon_matid,
         actuators,
         sensors: csensors,
         keys,
@@ -975,11 +1131,6 @@ fn compile_tendon(
         return Err(err(format!(
             "user has more values than nuser_tendon in tendon '{name}' (id = {id})"
         )));
-    }
-    if !t.material.is_empty() {
-        return Err(err(
-            "tendon materials are not supported by this compiler yet".into(),
-        ));
     }
     let sz = t.path.len();
     if sz == 0 {
@@ -1384,6 +1535,12 @@ impl Compiled {
         for (i, l) in self.lights.iter().enumerate() {
             name(&mut m.name_lightadr[i], &l.0.name, m.names);
         }
+        for (i, t) in self.texture_names.iter().enumerate() {
+            name(&mut m.name_texadr[i], t, m.names);
+        }
+        for (i, mat) in self.materials.iter().enumerate() {
+            name(&mut m.name_matadr[i], &mat.name, m.names);
+        }
         for (i, p) in self.pairs.iter().enumerate() {
             name(&mut m.name_pairadr[i], &p.0.name, m.names);
         }
@@ -1628,6 +1785,36 @@ impl Compiled {
             }
         }
 
+        // assets
+        let mut adr = 0;
+        for (i, (kind, width, height, rgb)) in self.textures.iter().enumerate() {
+            m.tex_type[i] = *kind;
+            m.tex_height[i] = *height;
+            m.tex_width[i] = *width;
+            m.tex_adr[i] = adr as i32;
+            m.tex_rgb[adr..adr + rgb.len()].copy_from_slice(rgb);
+            adr += rgb.len();
+        }
+        for (i, mat) in self.materials.iter().enumerate() {
+            m.mat_texid[i] = self.mat_texid[i];
+            m.mat_texuniform[i] = mat.texuniform as u8;
+            put(m.mat_texrepeat, i, &mat.texrepeat);
+            m.mat_emission[i] = mat.emission;
+            m.mat_specular[i] = mat.specular;
+            m.mat_shininess[i] = mat.shininess;
+            m.mat_reflectance[i] = mat.reflectance;
+            put(m.mat_rgba, i, &mat.rgba);
+        }
+        for (g, &id) in self.geom_matid.iter().enumerate() {
+            m.geom_matid[g] = id;
+        }
+        for (s, &id) in self.site_matid.iter().enumerate() {
+            m.site_matid[s] = id;
+        }
+        for (t, &id) in self.tendon_matid.iter().enumerate() {
+            m.tendon_matid[t] = id;
+        }
+
         // contact pairs, exclusions
         for (i, (p, g, sig)) in self.pairs.iter().enumerate() {
             m.pair_dim[i] = p.condim;
@@ -1657,7 +1844,6 @@ impl Compiled {
             let s = &t.spec;
             m.tendon_adr[i] = adr as i32;
             m.tendon_num[i] = t.wraps.len() as i32;
-            m.tendon_matid[i] = -1;
             m.tendon_group[i] = s.group;
             m.tendon_limited[i] = s.limited as u8;
             m.tendon_width[i] = s.width;

@@ -234,7 +234,8 @@ fn one_geom(el: &Element, g: &mut Geom) -> R<()> {
     some_nums(el, "solimp", &mut g.solimp)?;
     num(el, "margin", &mut g.margin)?;
     num(el, "gap", &mut g.gap)?;
-    for a in ["hfield", "mesh", "material", "shellinertia"] {
+    text(el, "material", &mut g.material);
+    for a in ["hfield", "mesh", "shellinertia"] {
         if el.attr(a).is_some() {
             g.unsupported = Some(a);
         }
@@ -266,9 +267,7 @@ fn one_site(el: &Element, s: &mut Site) -> R<()> {
     int(el, "group", &mut s.group)?;
     nums(el, "pos", &mut s.pos)?;
     nums(el, "quat", &mut s.quat)?;
-    if el.attr("material").is_some() {
-        s.unsupported = Some("material");
-    }
+    text(el, "material", &mut s.material);
     rgba(el, &mut s.rgba)?;
     nums(el, "fromto", &mut s.fromto)?;
     alternative(el, &mut s.alt)?;
@@ -754,6 +753,72 @@ fn read_tendons(spec: &mut ModelSpec, el: &Element) -> R<()> {
     Ok(())
 }
 
+fn one_material(el: &Element, m: &mut Material) -> R<()> {
+    text(el, "name", &mut m.name);
+    text(el, "texture", &mut m.texture);
+    if let Some(b) = boolean(el, "texuniform")? {
+        m.texuniform = b;
+    }
+    floats(el, "texrepeat", &mut m.texrepeat)?;
+    f1(el, "emission", &mut m.emission)?;
+    f1(el, "specular", &mut m.specular)?;
+    f1(el, "shininess", &mut m.shininess)?;
+    f1(el, "reflectance", &mut m.reflectance)?;
+    floats(el, "rgba", &mut m.rgba)?;
+    m.line = el.line;
+    Ok(())
+}
+
+fn read_assets(spec: &mut ModelSpec, el: &Element) -> R<()> {
+    for c in &el.children {
+        let def = class_of(spec, c)?.unwrap_or(0);
+        match c.name.as_str() {
+            "texture" => {
+                let mut t = Texture {
+                    line: c.line,
+                    ..Texture::default()
+                };
+                if let Some(i) = keyword(c, "type", &["2d", "cube", "skybox"])? {
+                    t.kind = i as i32;
+                }
+                text(c, "name", &mut t.name);
+                int(c, "width", &mut t.width)?;
+                int(c, "height", &mut t.height)?;
+                nums(c, "rgb1", &mut t.rgb1)?;
+                nums(c, "rgb2", &mut t.rgb2)?;
+                nums(c, "markrgb", &mut t.markrgb)?;
+                num(c, "random", &mut t.random)?;
+                if let Some(i) = keyword(c, "builtin", &["none", "gradient", "checker", "flat"])? {
+                    t.builtin = i as i32;
+                }
+                if let Some(i) = keyword(c, "mark", &["none", "edge", "cross", "random"])? {
+                    t.mark = i as i32;
+                }
+                boolean(c, "hflip")?;
+                boolean(c, "vflip")?;
+                let files = [
+                    "file",
+                    "fileright",
+                    "fileleft",
+                    "fileup",
+                    "filedown",
+                    "filefront",
+                    "fileback",
+                ];
+                t.files = files.iter().any(|f| c.attr(f).is_some());
+                spec.textures.push(t);
+            }
+            "material" => {
+                let mut m = spec.defaults[def].material.clone();
+                one_material(c, &mut m)?;
+                spec.materials.push(m);
+            }
+            other => return Err(unsupported(c, other)),
+        }
+    }
+    Ok(())
+}
+
 fn unsupported(el: &Element, what: &str) -> String {
     xerr(
         el,
@@ -808,6 +873,7 @@ fn read_default(spec: &mut ModelSpec, el: &Element, parent: Option<usize>) -> R<
             "camera" => one_camera(c, &mut d.camera)?,
             "light" => one_light(c, &mut d.light)?,
             "pair" => one_pair(c, &mut d.pair, true)?,
+            "material" => one_material(c, &mut d.material)?,
             "equality" => one_equality(c, &mut d.equality, true)?,
             "tendon" => one_tendon(c, &mut d.tendon)?,
             n if ACTUATORS.contains(&n) => one_actuator(c, &mut d.actuator)?,
@@ -1245,6 +1311,9 @@ pub fn read(root: &Element) -> R<ModelSpec> {
     for s in sections("default") {
         read_default(&mut spec, s, None)?;
     }
+    for s in sections("asset") {
+        read_assets(&mut spec, s)?;
+    }
     for s in sections("worldbody") {
         let mut world = std::mem::take(&mut spec.world);
         let r = read_body(&spec, s, &mut world, 0, true);
@@ -1282,7 +1351,7 @@ pub fn read(root: &Element) -> R<ModelSpec> {
     for s in sections("keyframe") {
         read_keys(&mut spec, s)?;
     }
-    const KNOWN: [&str; 13] = [
+    const KNOWN: [&str; 14] = [
         "compiler",
         "option",
         "size",
@@ -1290,6 +1359,7 @@ pub fn read(root: &Element) -> R<ModelSpec> {
         "statistic",
         "default",
         "worldbody",
+        "asset",
         "contact",
         "equality",
         "tendon",
