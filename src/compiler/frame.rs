@@ -254,6 +254,8 @@ pub fn eig3(mat: &[f64; 9]) -> ([f64; 3], [f64; 4]) {
         let j1 = j % 2;
         if eigval[j1] < eigval[j1 + 1] {
             eigval.swap(j1, j1 + 1);
+            // cos(pi/4) as 2.2.2 writes it (15 digits, not FRAC_1_SQRT_2)
+            #[allow(clippy::approx_constant)]
             let mut rot = [0.707106781186548, 0.0, 0.0, 0.0];
             rot[(j1 + 2) % 3 + 1] = rot[0];
             quat = mulquat(&quat, &rot);

@@ -405,11 +405,11 @@ pub fn limited_msg(entity: &str, attr: &str) -> String {
     )
 }
 
-/// Inertial frame of a body from its selected geoms: (ipos, iquat, mass, inertia).
-pub fn geom_frame(
-    geoms: &[&GeomOut],
-    s: &Settings,
-) -> Result<Option<([f64; 3], [f64; 4], f64, [f64; 3])>, CError> {
+/// Inertial frame of a body: position, orientation, mass, principal inertia.
+pub type Inertial = ([f64; 3], [f64; 4], f64, [f64; 3]);
+
+/// Inertial frame of a body from its selected geoms.
+pub fn geom_frame(geoms: &[&GeomOut], s: &Settings) -> Result<Option<Inertial>, CError> {
     match geoms.len() {
         0 => Ok(None),
         1 => Ok(Some((
@@ -423,8 +423,8 @@ pub fn geom_frame(
             let mut com = [0.0; 3];
             for g in geoms {
                 mass += g.mass;
-                for k in 0..3 {
-                    com[k] += g.mass * g.pos[k];
+                for (c, p) in com.iter_mut().zip(g.pos) {
+                    *c += g.mass * p;
                 }
             }
             if mass < MINVAL {

@@ -44,7 +44,7 @@ impl CRand {
     }
 
     /// Next value in 0..=RAND_MAX.
-    pub fn next(&mut self) -> i32 {
+    pub fn rand(&mut self) -> i32 {
         (self.step() >> 1) as i32
     }
 }
@@ -115,7 +115,7 @@ fn marks(img: &mut [u8], t: &Texture, width: usize, height: usize, faces: usize,
         3 if t.random > 0.0 => {
             let total = faces * width * height;
             for p in 0..total {
-                if (rng.next() as f64) < t.random * RAND_MAX {
+                if (rng.rand() as f64) < t.random * RAND_MAX {
                     img[3 * p..3 * p + 3].copy_from_slice(&m);
                 }
             }

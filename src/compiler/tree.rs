@@ -1484,9 +1484,7 @@ fn put<T: Copy>(dst: &mut [T], i: usize, src: &[T]) {
 
 fn null_pose(pos: &[f64; 3], quat: Option<&[f64; 4]>) -> bool {
     pos.iter().all(|&p| p == 0.0)
-        && quat.map_or(true, |q| {
-            q[0] == 1.0 && q[1] == 0.0 && q[2] == 0.0 && q[3] == 0.0
-        })
+        && quat.is_none_or(|q| q[0] == 1.0 && q[1] == 0.0 && q[2] == 0.0 && q[3] == 0.0)
 }
 
 fn normalize4_engine(q: &mut [f64]) {

@@ -58,7 +58,9 @@ fn read_nums<T: std::str::FromStr + From<f32> + Copy + PartialEq>(
         let Some(tok) = toks.next() else { break };
         out[n] = parse_real::<T>(tok)
             .ok_or_else(|| xerr(el, &format!("problem reading attribute '{name}'")))?;
-        if out[n] != out[n] {
+        #[allow(clippy::eq_op)]
+        let nan = out[n] != out[n];
+        if nan {
             crate::capi::errmem::warning("XML contains a 'NaN'. Please check it carefully.");
         }
         n += 1;

@@ -124,13 +124,11 @@ pub fn parse(text: &str) -> Result<Element, String> {
                 }
             }
             Event::Eof => break,
-            Event::Text(t) => {
-                if stack.is_empty() && !t.iter().all(|b| b.is_ascii_whitespace()) {
-                    return Err(format!(
-                        "XML parse error: text outside the root element\nLine number={}\n",
-                        lines.line(before)
-                    ));
-                }
+            Event::Text(t) if stack.is_empty() && !t.iter().all(|b| b.is_ascii_whitespace()) => {
+                return Err(format!(
+                    "XML parse error: text outside the root element\nLine number={}\n",
+                    lines.line(before)
+                ));
             }
             _ => {}
         }
