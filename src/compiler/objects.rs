@@ -214,11 +214,13 @@ pub fn rbound(kind: i32, s: &[f64; 3]) -> f64 {
     }
 }
 
+/// Compiles a geom; `hfield` is the size of its height field, if it names one.
 pub fn compile_geom(
     g: &Geom,
     id: usize,
     static_body: bool,
     infer: bool,
+    hfield: Option<[f64; 4]>,
     s: &Settings,
 ) -> Result<GeomOut, String> {
     let name = g.name.as_str();
@@ -233,13 +235,15 @@ pub fn compile_geom(
     if ![1, 3, 4, 6].contains(&g.condim) {
         return Err(format!("invalid condim in geom '{name}' (id = {id})"));
     }
-    if g.kind == 1 || g.kind == 7 {
+    if g.kind == 7 {
+        return Err("mesh geoms are not supported by this compiler yet".into());
+    }
+    if (g.kind == 1) != hfield.is_some() {
         return Err(format!(
-            "{} geoms are not supported by this compiler yet",
-            if g.kind == 1 { "hfield" } else { "mesh" }
+            "hfield geom '{name}' (id = {id}) must have valid hfieldid"
         ));
     }
-    if g.kind == PLANE && !static_body {
+    if (g.kind == PLANE || g.kind == 1) && !static_body {
         return Err(format!(
             "plane and hfield only allowed in static bodies: geom '{name}' (id = {id})"
         ));
@@ -266,6 +270,9 @@ pub fn compile_geom(
             .map_err(|e| format!("alternative specification error '{e}' in geom {id}"))?;
     }
     check_size(&size, g.kind, "geom", name, id)?;
+    if let Some(hf) = hfield {
+        size = [hf[0], hf[1], 0.5 * (hf[2] + hf[3])];
+    }
     let (mut mass, mut inertia) = (0.0, [0.0; 3]);
     if infer {
         let mut density = g.density;

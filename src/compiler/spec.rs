@@ -134,6 +134,7 @@ pub struct Geom {
     /// Attributes the compiler does not handle yet (material, mesh, hfield, shellinertia).
     pub unsupported: Option<&'static str>,
     pub material: String,
+    pub hfield: String,
     pub user: Vec<f64>,
 }
 
@@ -166,6 +167,7 @@ impl Default for Geom {
             fluid_coefs: [0.5, 0.25, 1.5, 1.0, 1.0],
             unsupported: None,
             material: String::new(),
+            hfield: String::new(),
             user: Vec::new(),
         }
     }
@@ -494,6 +496,17 @@ impl Default for Tendon {
     }
 }
 
+/// `<hfield>` given by size and grid (elevation from files is not supported yet).
+#[derive(Debug, Clone, Default)]
+pub struct HField {
+    pub name: String,
+    pub line: Line,
+    pub file: String,
+    pub nrow: i32,
+    pub ncol: i32,
+    pub size: [f64; 4],
+}
+
 /// `<texture>`; `kind` 0 2d, 1 cube, 2 skybox; `builtin` none, gradient, checker, flat;
 /// `mark` none, edge, cross, random.
 #[derive(Debug, Clone)]
@@ -704,6 +717,7 @@ pub struct ModelSpec {
     pub defaults: Vec<DefaultClass>,
     pub world: Body,
     pub actuators: Vec<Actuator>,
+    pub hfields: Vec<HField>,
     pub textures: Vec<Texture>,
     pub materials: Vec<Material>,
     pub pairs: Vec<Pair>,
@@ -741,6 +755,7 @@ impl Default for ModelSpec {
             }],
             world,
             actuators: Vec::new(),
+            hfields: Vec::new(),
             textures: Vec::new(),
             materials: Vec::new(),
             pairs: Vec::new(),

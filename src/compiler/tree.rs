@@ -69,6 +69,8 @@ pub struct Compiled {
     /// (mjtTexture, width, height, RGB bytes)
     textures: Vec<(i32, i32, i32, Vec<u8>)>,
     texture_names: Vec<String>,
+    hfields: Vec<HField>,
+    geom_hfield: Vec<Option<usize>>,
     materials: Vec<Material>,
     mat_texid: Vec<i32>,
     geom_matid: Vec<i32>,
@@ -292,6 +294,34 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
             ));
         }
     }
+    for (id, hf) in spec.hfields.iter().enumerate() {
+        if hf.name.is_empty() {
+            return Err(CError::at(
+                "empty name in height field".into(),
+                &hf.name,
+                id,
+                hf.line,
+            ));
+        }
+    }
+    let mut geom_hfield: Vec<Option<usize>> = vec![None; gspecs.len()];
+    for (i, g) in gspecs.iter().enumerate() {
+        if !g.hfield.is_empty() {
+            let h = spec
+                .hfields
+                .iter()
+                .position(|h| h.name == g.hfield)
+                .ok_or_else(|| {
+                    CError::at(
+                        format!("hfield '{}' not found in geom {i}", g.hfield),
+                        &g.name,
+                        i,
+                        g.line,
+                    )
+                })?;
+            geom_hfield[i] = Some(h);
+        }
+    }
     let find_mat = |n: &str| spec.materials.iter().position(|m| m.name == n);
     let mut geom_matid = vec![-1; gspecs.len()];
     for (i, g) in gspecs.iter().enumerate() {
@@ -406,7 +436,8 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
                 );
                 return Err(CError::at(m, &g.name, gid, g.line));
             }
-            let out = compile_geom(g, gid, b.weldid == 0, infer, &settings)
+            let hf = geom_hfield[gid].map(|h| spec.hfields[h].size);
+            let out = compile_geom(g, gid, b.weldid == 0, infer, hf, &settings)
                 .map_err(|m| CError::at(m, &g.name, gid, g.line))?;
             geoms[gid] = Some(FGeom {
                 spec: g.clone(),
@@ -513,6 +544,26 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
     }
     let geoms: Vec<FGeom> = geoms.into_iter().flatten().collect();
     let sites: Vec<FSite> = sites.into_iter().flatten().collect();
+
+    // height fields: elevation is all zero without a file
+    for (id, hf) in spec.hfields.iter().enumerate() {
+        let name = &hf.name;
+        let err = |m: String| CError::at(m, name, id, hf.line);
+        if hf.size.iter().any(|&s| s <= 0.0) {
+            return Err(err(format!(
+                "size parameter is not positive in hfield '{name}' (id = {id})"
+            )));
+        }
+        if !hf.file.is_empty() {
+            return Err(err(
+                "height fields from files are not supported by this compiler yet".into(),
+            ));
+        }
+        if hf.nrow < 1 || hf.ncol < 1 {
+            return Err(err(format!("hfield '{name}' (id = {id}) not specified")));
+        }
+    }
+    let hfields = spec.hfields;
 
     // textures (random marks draw from the C generator seeded as 2.2.2 seeds it)
     let mut rng = super::texture::CRand::new(123);
@@ -848,6 +899,9 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
     nnames += sites.iter().map(|s| s.spec.name.len() + 1).sum::<usize>();
     nnames += cameras.iter().map(|c| c.0.name.len() + 1).sum::<usize>();
     nnames += lights.iter().map(|l| l.0.name.len() + 1).sum::<usize>();
+    nnames += hfields.iter().map(|h| h.name.len() + 1).sum::<usize>();
+    h.nhfield = hfields.len() as i32;
+    h.nhfielddata = hfields.iter().map(|h| h.nrow * h.ncol).sum();
     nnames += spec
         .textures
         .iter()
@@ -1018,6 +1072,8 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
         tendons,
         textures,
         texture_names: spec.textures.iter().map(|t| t.name.clone()).collect(),
+        hfields,
+        geom_hfield,
         materials,
         mat_texid,
         geom_matid,
@@ -1533,6 +1589,9 @@ impl Compiled {
         for (i, l) in self.lights.iter().enumerate() {
             name(&mut m.name_lightadr[i], &l.0.name, m.names);
         }
+        for (i, hf) in self.hfields.iter().enumerate() {
+            name(&mut m.name_hfieldadr[i], &hf.name, m.names);
+        }
         for (i, t) in self.texture_names.iter().enumerate() {
             name(&mut m.name_texadr[i], t, m.names);
         }
@@ -1784,6 +1843,19 @@ impl Compiled {
         }
 
         // assets
+        let mut adr = 0;
+        for (i, hf) in self.hfields.iter().enumerate() {
+            put(m.hfield_size, i, &hf.size);
+            m.hfield_nrow[i] = hf.nrow;
+            m.hfield_ncol[i] = hf.ncol;
+            m.hfield_adr[i] = adr;
+            adr += hf.nrow * hf.ncol;
+        }
+        for (g, hf) in self.geom_hfield.iter().enumerate() {
+            if let Some(h) = hf {
+                m.geom_dataid[g] = *h as i32;
+            }
+        }
         let mut adr = 0;
         for (i, (kind, width, height, rgb)) in self.textures.iter().enumerate() {
             m.tex_type[i] = *kind;

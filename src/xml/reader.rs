@@ -237,7 +237,8 @@ fn one_geom(el: &Element, g: &mut Geom) -> R<()> {
     num(el, "margin", &mut g.margin)?;
     num(el, "gap", &mut g.gap)?;
     text(el, "material", &mut g.material);
-    for a in ["hfield", "mesh", "shellinertia"] {
+    text(el, "hfield", &mut g.hfield);
+    for a in ["mesh", "shellinertia"] {
         if el.attr(a).is_some() {
             g.unsupported = Some(a);
         }
@@ -809,6 +810,18 @@ fn read_assets(spec: &mut ModelSpec, el: &Element) -> R<()> {
                 ];
                 t.files = files.iter().any(|f| c.attr(f).is_some());
                 spec.textures.push(t);
+            }
+            "hfield" => {
+                let mut hf = HField {
+                    line: c.line,
+                    ..HField::default()
+                };
+                text(c, "name", &mut hf.name);
+                text(c, "file", &mut hf.file);
+                int(c, "nrow", &mut hf.nrow)?;
+                int(c, "ncol", &mut hf.ncol)?;
+                read_nums(c, "size", &mut hf.size, true, true)?;
+                spec.hfields.push(hf);
             }
             "material" => {
                 let mut m = spec.defaults[def].material.clone();
