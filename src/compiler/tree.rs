@@ -1740,6 +1740,7 @@ impl Compiled {
                 m.geom_condim[gid] = s.condim;
                 m.geom_bodyid[gid] = g.body as i32;
                 m.geom_dataid[gid] = -1;
+                put(m.geom_fluid, gid, &g.out.fluid);
                 m.geom_matid[gid] = -1;
                 m.geom_group[gid] = s.group;
                 m.geom_priority[gid] = s.priority;
