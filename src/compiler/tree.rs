@@ -25,6 +25,9 @@ struct FBody {
     iquat: [f64; 4],
     mass: f64,
     inertia: [f64; 3],
+    /// body frame in world coordinates (differs from pos/quat with coordinate="global")
+    gpos: [f64; 3],
+    gquat: [f64; 4],
 }
 
 struct FGeom {
@@ -122,6 +125,8 @@ fn flatten(
         iquat: spec.iquat,
         mass: spec.mass,
         inertia: spec.inertia,
+        gpos: [0.0; 3],
+        gquat: [1.0, 0.0, 0.0, 0.0],
         spec,
     };
     for g in std::mem::take(&mut fb.spec.geoms) {
@@ -183,11 +188,6 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
         degree: opts.degree,
         eulerseq: &opts.eulerseq,
     };
-    if opts.global {
-        return Err(CError::msg(
-            "coordinate=\"global\" is not supported by this compiler yet",
-        ));
-    }
 
     // lists in tree order
     let mut bodies = Vec::new();
@@ -396,7 +396,7 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
             )));
         }
         let b = &mut bodies[i];
-        if !defined(b.pos[0]) {
+        if !defined(b.pos[0]) && !opts.global {
             b.pos = [0.0; 3];
         }
         normalize(&mut b.quat);
@@ -462,9 +462,14 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
                 (b.ipos, b.iquat, b.mass, b.inertia) = (ipos, iquat, mass, inertia);
             }
         }
-        if !defined(b.ipos[0]) {
+        if !defined(b.ipos[0]) && !defined(b.pos[0]) {
+            return Err(berr("body pos and ipos are both undefined".into()));
+        } else if !defined(b.ipos[0]) {
             b.ipos = b.pos;
             b.iquat = b.quat;
+        } else if !defined(b.pos[0]) {
+            b.pos = b.ipos;
+            b.quat = b.iquat;
         }
         if i > 0 {
             b.mass = b.mass.max(opts.boundmass);
@@ -540,6 +545,57 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
         }
         for lid in bodies[i].lights.clone() {
             compile_light(&mut lights[lid].0, lid, i, &bodies)?;
+        }
+
+        // frames so far are in world coordinates when coordinate="global": make them local
+        let b = &mut bodies[i];
+        (b.gpos, b.gquat) = (b.pos, b.quat);
+        if opts.global && i > 0 {
+            let (bp, bq) = (b.pos, b.quat);
+            let (ip, iq) = (b.ipos, b.iquat);
+            b.ipos = local_pos(&ip, &bp, &bq);
+            b.iquat = local_quat(&iq, &bq);
+            let (pp, pq) = (
+                bodies[bodies[i].parent].gpos,
+                bodies[bodies[i].parent].gquat,
+            );
+            let b = &mut bodies[i];
+            b.pos = local_pos(&bp, &pp, &pq);
+            b.quat = local_quat(&bq, &pq);
+        }
+        if opts.global {
+            let (bp, bq) = (bodies[i].gpos, bodies[i].gquat);
+            for &g in &bodies[i].geoms {
+                if let Some(g) = geoms[g].as_mut() {
+                    g.out.pos = local_pos(&g.out.pos, &bp, &bq);
+                    g.out.quat = local_quat(&g.out.quat, &bq);
+                }
+            }
+            for &j in &bodies[i].joints {
+                let j = &mut joints[j].spec;
+                if j.kind != JointType::Free {
+                    j.pos = local_pos(&j.pos, &bp, &bq);
+                }
+                j.axis = local_axis(&j.axis, &bq);
+            }
+            for &s in &bodies[i].sites {
+                if let Some(s) = sites[s].as_mut() {
+                    s.out.pos = local_pos(&s.out.pos, &bp, &bq);
+                    s.out.quat = local_quat(&s.out.quat, &bq);
+                }
+            }
+            for &c in &bodies[i].cameras {
+                let c = &mut cameras[c].0;
+                c.pos = local_pos(&c.pos, &bp, &bq);
+                c.quat = local_quat(&c.quat, &bq);
+            }
+            for &l in &bodies[i].lights {
+                let l = &mut lights[l].0;
+                l.pos = local_pos(&l.pos, &bp, &bq);
+                // 2.2.2 rotates the direction by the conjugate of the light's local rotation
+                let lq = local_quat(&[1.0, 0.0, 0.0, 0.0], &bq);
+                l.dir = mat_vec(&quat2mat(&conj(&lq)), &l.dir);
+            }
         }
     }
     let geoms: Vec<FGeom> = geoms.into_iter().flatten().collect();
@@ -683,6 +739,21 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
                     e.name2
                 ))
             })? as i32;
+        }
+        if opts.global && e.kind <= 1 {
+            // anchors are given in world coordinates: connect in body1, weld in body2 (if named)
+            let frame = if e.kind == 0 {
+                Some(o1)
+            } else if o2 >= 0 {
+                Some(o2 as usize)
+            } else {
+                None
+            };
+            if let Some(f) = frame {
+                let (bp, bq) = (bodies[f].gpos, bodies[f].gquat);
+                let a = local_pos(&[e.data[0], e.data[1], e.data[2]], &bp, &bq);
+                e.data[..3].copy_from_slice(&a);
+            }
         }
         if e.kind <= 1 && o2 == -1 {
             o2 = 0;
@@ -1702,8 +1773,8 @@ impl Compiled {
                 let q = qposadr;
                 match j.kind {
                     JointType::Free => {
-                        m.qpos0[q..q + 3].copy_from_slice(&b.pos);
-                        m.qpos0[q + 3..q + 7].copy_from_slice(&b.quat);
+                        m.qpos0[q..q + 3].copy_from_slice(&b.gpos);
+                        m.qpos0[q + 3..q + 7].copy_from_slice(&b.gquat);
                         let v: Vec<f64> = m.qpos0[q..q + 7].to_vec();
                         m.qpos_spring[q..q + 7].copy_from_slice(&v);
                     }
