@@ -43,12 +43,17 @@ impl Lines {
 fn element(e: &BytesStart, line: i32) -> Result<Element, String> {
     let name = String::from_utf8_lossy(e.name().as_ref()).into_owned();
     let mut attrs: Vec<(String, String)> = Vec::new();
+    // malformed or repeated attributes are reported as tinyxml2 reports them
+    let bad = || {
+        format!(
+            "XML parse error 7:\nError=XML_ERROR_PARSING_ATTRIBUTE ErrorID=7 (0x7) \
+             Line number={line}: XMLElement name={name}\n"
+        )
+    };
     for a in e.attributes().with_checks(true) {
-        let a = a.map_err(|err| format!("XML parse error: {err}, line {line}"))?;
+        let a = a.map_err(|_| bad())?;
         let key = String::from_utf8_lossy(a.key.as_ref()).into_owned();
-        let value = a
-            .unescape_value()
-            .map_err(|err| format!("XML parse error: {err}, line {line}"))?;
+        let value = a.unescape_value().map_err(|_| bad())?;
         attrs.push((key, value.into_owned()));
     }
     Ok(Element {
