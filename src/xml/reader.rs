@@ -13,7 +13,11 @@ pub fn xerr(el: &Element, msg: &str) -> String {
     )
 }
 
-fn parse_real<T: std::str::FromStr + From<f32> + PartialEq>(tok: &str) -> Option<T> {
+/// A number as C++ stream extraction reads it: overflow to infinity is a failure; "inf" and
+/// "nan" (optionally negative) are accepted spelled out.
+fn parse_real<T: std::str::FromStr + From<f32> + PartialEq + Copy + Into<f64>>(
+    tok: &str,
+) -> Option<T> {
     let body = tok.strip_prefix('-').unwrap_or(tok);
     let special = |s: &str| s.eq_ignore_ascii_case("inf") || s.eq_ignore_ascii_case("nan");
     if (tok.len() == 3 || (tok.len() == 4 && tok.starts_with('-'))) && special(body) {
@@ -31,11 +35,11 @@ fn parse_real<T: std::str::FromStr + From<f32> + PartialEq>(tok: &str) -> Option
     {
         return None;
     }
-    tok.parse::<T>().ok()
+    tok.parse::<T>().ok().filter(|v| !(*v).into().is_infinite())
 }
 
 /// Reads up to `out.len()` numbers of attribute `name`; returns how many (0: absent).
-fn read_nums<T: std::str::FromStr + From<f32> + Copy + PartialEq>(
+fn read_nums<T: std::str::FromStr + From<f32> + Copy + PartialEq + Into<f64>>(
     el: &Element,
     name: &str,
     out: &mut [T],

@@ -84,6 +84,12 @@ pub fn parse(text: &str) -> Result<Element, String> {
                      Line number={line}: XMLElement name={name}\n"
                 ));
             }
+            // a stray end tag after the root is ignored, as tinyxml2 does
+            Err(quick_xml::Error::IllFormed(
+                quick_xml::errors::IllFormedError::UnmatchedEndTag(_),
+            )) if stack.is_empty() && root.is_some() => {
+                continue;
+            }
             Err(err) => {
                 let at = lines.line(reader.error_position() as usize);
                 return Err(format!("XML parse error: {err}\nLine number={at}\n"));
@@ -98,26 +104,14 @@ pub fn parse(text: &str) -> Result<Element, String> {
             )
         };
         match ev {
-            Event::Start(e) => {
-                let el = element(&e, tag_line())?;
-                if root.is_some() && stack.is_empty() {
-                    return Err(format!(
-                        "XML parse error: more than one root element\nLine number={}\n",
-                        el.line
-                    ));
-                }
-                stack.push(el);
-            }
+            // later top-level elements are parsed and dropped: tinyxml2's root is the first
+            Event::Start(e) => stack.push(element(&e, tag_line())?),
             Event::Empty(e) => {
                 let el = element(&e, tag_line())?;
                 match stack.last_mut() {
                     Some(parent) => parent.children.push(el),
-                    None if root.is_none() => root = Some(el),
                     None => {
-                        return Err(format!(
-                            "XML parse error: more than one root element\nLine number={}\n",
-                            el.line
-                        ))
+                        root.get_or_insert(el);
                     }
                 }
             }
@@ -125,7 +119,9 @@ pub fn parse(text: &str) -> Result<Element, String> {
                 let el = stack.pop().ok_or("XML parse error: unmatched end tag")?;
                 match stack.last_mut() {
                     Some(parent) => parent.children.push(el),
-                    None => root = Some(el),
+                    None => {
+                        root.get_or_insert(el);
+                    }
                 }
             }
             Event::Eof => break,
@@ -140,8 +136,8 @@ pub fn parse(text: &str) -> Result<Element, String> {
     }
     if let Some(open) = stack.last() {
         return Err(format!(
-            "XML parse error: element '{}' is not closed\nLine number={}\n",
-            open.name, open.line
+            "XML parse error 15:\nError=XML_ERROR_PARSING ErrorID=15 (0xf) Line number={}\n",
+            open.line
         ));
     }
     root.ok_or_else(|| {
