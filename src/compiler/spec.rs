@@ -576,6 +576,15 @@ impl Default for Material {
     }
 }
 
+/// `<custom>` entries: numeric (name, size, data), text (name, data), tuple (name, elements).
+#[derive(Debug, Clone, Default)]
+pub struct Custom {
+    pub numerics: Vec<(String, Line, Vec<f64>)>,
+    pub texts: Vec<(String, Line, String)>,
+    /// (name, line, [(mjtObj, object name, prm)])
+    pub tuples: Vec<(String, Line, Vec<(i32, String, f64)>)>,
+}
+
 /// A default class: the values new elements of each kind start from.
 #[derive(Debug, Clone, Default)]
 pub struct DefaultClass {
@@ -725,6 +734,7 @@ pub struct ModelSpec {
     pub equalities: Vec<Equality>,
     pub tendons: Vec<Tendon>,
     pub sensors: Vec<Sensor>,
+    pub custom: Custom,
     pub keys: Vec<Key>,
 }
 
@@ -763,6 +773,7 @@ impl Default for ModelSpec {
             equalities: Vec::new(),
             tendons: Vec::new(),
             sensors: Vec::new(),
+            custom: Custom::default(),
             keys: Vec::new(),
         }
     }

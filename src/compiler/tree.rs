@@ -81,6 +81,8 @@ pub struct Compiled {
     tendon_matid: Vec<i32>,
     actuators: Vec<Actuator>,
     sensors: Vec<CSensor>,
+    custom: Custom,
+    tuple_ids: Vec<Vec<i32>>,
     keys: Vec<Key>,
     trnid: Vec<[i32; 2]>,
     nuser: [usize; 8],
@@ -259,6 +261,13 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
     )?;
     let sensors = spec.sensors;
     check_names(sensors.iter().map(|s| (s.name.as_str(), -1)), "sensor")?;
+    let custom = spec.custom;
+    check_names(
+        custom.numerics.iter().map(|x| (x.0.as_str(), x.1)),
+        "numeric",
+    )?;
+    check_names(custom.texts.iter().map(|x| (x.0.as_str(), x.1)), "text")?;
+    check_names(custom.tuples.iter().map(|x| (x.0.as_str(), x.1)), "tuple")?;
     check_names(keys.iter().map(|k| (k.name.as_str(), -1)), "key")?;
 
     let n = &spec.nuser;
@@ -942,6 +951,166 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
         csensors.push(c);
     }
 
+    // custom tuples: object ids by type and name
+    let mut tuple_ids = Vec::new();
+    for (id, (name, line, elems)) in custom.tuples.iter().enumerate() {
+        if elems.is_empty() {
+            return Err(CError::at(
+                format!("tuple '{name}' (id = {id}) is empty"),
+                name,
+                id,
+                *line,
+            ));
+        }
+        let mut ids = Vec::new();
+        for (kind, oname, _) in elems {
+            let by_name =
+                |mut names: std::slice::Iter<'_, &str>| names.position(|n| *n == oname.as_str());
+            let found = match kind {
+                1 | 2 => find_body(&bodies, oname),
+                3 => by_name(
+                    joints
+                        .iter()
+                        .map(|j| j.spec.name.as_str())
+                        .collect::<Vec<&str>>()
+                        .iter(),
+                ),
+                5 => by_name(
+                    geoms
+                        .iter()
+                        .map(|g| g.spec.name.as_str())
+                        .collect::<Vec<&str>>()
+                        .iter(),
+                ),
+                6 => by_name(
+                    sites
+                        .iter()
+                        .map(|s| s.spec.name.as_str())
+                        .collect::<Vec<&str>>()
+                        .iter(),
+                ),
+                7 => by_name(
+                    cameras
+                        .iter()
+                        .map(|c| c.0.name.as_str())
+                        .collect::<Vec<&str>>()
+                        .iter(),
+                ),
+                8 => by_name(
+                    lights
+                        .iter()
+                        .map(|l| l.0.name.as_str())
+                        .collect::<Vec<&str>>()
+                        .iter(),
+                ),
+                11 => by_name(
+                    hfields
+                        .iter()
+                        .map(|h| h.name.as_str())
+                        .collect::<Vec<&str>>()
+                        .iter(),
+                ),
+                12 => by_name(
+                    spec.textures
+                        .iter()
+                        .map(|t| t.name.as_str())
+                        .collect::<Vec<&str>>()
+                        .iter(),
+                ),
+                13 => by_name(
+                    materials
+                        .iter()
+                        .map(|m| m.name.as_str())
+                        .collect::<Vec<&str>>()
+                        .iter(),
+                ),
+                14 => by_name(
+                    pairs
+                        .iter()
+                        .map(|p| p.0.name.as_str())
+                        .collect::<Vec<&str>>()
+                        .iter(),
+                ),
+                15 => by_name(
+                    excludes
+                        .iter()
+                        .map(|e| e.0.as_str())
+                        .collect::<Vec<&str>>()
+                        .iter(),
+                ),
+                16 => by_name(
+                    equalities
+                        .iter()
+                        .map(|e| e.0.name.as_str())
+                        .collect::<Vec<&str>>()
+                        .iter(),
+                ),
+                17 => by_name(
+                    tendons
+                        .iter()
+                        .map(|t| t.spec.name.as_str())
+                        .collect::<Vec<&str>>()
+                        .iter(),
+                ),
+                18 => by_name(
+                    actuators
+                        .iter()
+                        .map(|a| a.name.as_str())
+                        .collect::<Vec<&str>>()
+                        .iter(),
+                ),
+                19 => by_name(
+                    csensors
+                        .iter()
+                        .map(|s| s.spec.name.as_str())
+                        .collect::<Vec<&str>>()
+                        .iter(),
+                ),
+                20 => by_name(
+                    custom
+                        .numerics
+                        .iter()
+                        .map(|x| x.0.as_str())
+                        .collect::<Vec<&str>>()
+                        .iter(),
+                ),
+                21 => by_name(
+                    custom
+                        .texts
+                        .iter()
+                        .map(|x| x.0.as_str())
+                        .collect::<Vec<&str>>()
+                        .iter(),
+                ),
+                22 => by_name(
+                    custom
+                        .tuples
+                        .iter()
+                        .map(|x| x.0.as_str())
+                        .collect::<Vec<&str>>()
+                        .iter(),
+                ),
+                23 => by_name(
+                    keys.iter()
+                        .map(|k| k.name.as_str())
+                        .collect::<Vec<&str>>()
+                        .iter(),
+                ),
+                _ => None,
+            };
+            let Some(found) = found else {
+                return Err(CError::at(
+                    format!("unrecognized object '{oname}' in tuple {id}"),
+                    name,
+                    id,
+                    *line,
+                ));
+            };
+            ids.push(found as i32);
+        }
+        tuple_ids.push(ids);
+    }
+
     // sizes
     h.nbody = bodies.len() as i32;
     h.njnt = joints.len() as i32;
@@ -1000,6 +1169,15 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
         .iter()
         .map(|s| s.spec.name.len() + 1)
         .sum::<usize>();
+    nnames += custom.numerics.iter().map(|x| x.0.len() + 1).sum::<usize>();
+    nnames += custom.texts.iter().map(|x| x.0.len() + 1).sum::<usize>();
+    nnames += custom.tuples.iter().map(|x| x.0.len() + 1).sum::<usize>();
+    h.nnumeric = custom.numerics.len() as i32;
+    h.nnumericdata = custom.numerics.iter().map(|x| x.2.len() as i32).sum();
+    h.ntext = custom.texts.len() as i32;
+    h.ntextdata = custom.texts.iter().map(|x| x.2.len() as i32 + 1).sum();
+    h.ntuple = custom.tuples.len() as i32;
+    h.ntupledata = custom.tuples.iter().map(|x| x.2.len() as i32).sum();
     nnames += keys.iter().map(|k| k.name.len() + 1).sum::<usize>();
     h.nnames = nnames as i32;
     h.nconmax = if spec.nconmax < 0 { 100 } else { spec.nconmax };
@@ -1152,6 +1330,8 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
         tendon_matid,
         actuators,
         sensors: csensors,
+        custom,
+        tuple_ids,
         keys,
         trnid,
         nuser,
@@ -1687,6 +1867,15 @@ impl Compiled {
         for (i, s) in self.sensors.iter().enumerate() {
             name(&mut m.name_sensoradr[i], &s.spec.name, m.names);
         }
+        for (i, x) in self.custom.numerics.iter().enumerate() {
+            name(&mut m.name_numericadr[i], &x.0, m.names);
+        }
+        for (i, x) in self.custom.texts.iter().enumerate() {
+            name(&mut m.name_textadr[i], &x.0, m.names);
+        }
+        for (i, x) in self.custom.tuples.iter().enumerate() {
+            name(&mut m.name_tupleadr[i], &x.0, m.names);
+        }
         for (i, k) in self.keys.iter().enumerate() {
             name(&mut m.name_keyadr[i], &k.name, m.names);
         }
@@ -2032,6 +2221,35 @@ impl Compiled {
             let mut user = a.user.clone();
             user.resize(nua, 0.0);
             put(m.actuator_user, i, &user);
+        }
+
+        // custom data
+        let mut adr = 0;
+        for (i, x) in self.custom.numerics.iter().enumerate() {
+            m.numeric_adr[i] = adr as i32;
+            m.numeric_size[i] = x.2.len() as i32;
+            m.numeric_data[adr..adr + x.2.len()].copy_from_slice(&x.2);
+            adr += x.2.len();
+        }
+        let mut adr = 0;
+        for (i, x) in self.custom.texts.iter().enumerate() {
+            m.text_adr[i] = adr as i32;
+            m.text_size[i] = x.2.len() as i32 + 1;
+            for (k, b) in x.2.bytes().enumerate() {
+                m.text_data[adr + k] = b as std::os::raw::c_char;
+            }
+            adr += x.2.len() + 1;
+        }
+        let mut adr = 0;
+        for (i, x) in self.custom.tuples.iter().enumerate() {
+            m.tuple_adr[i] = adr as i32;
+            m.tuple_size[i] = x.2.len() as i32;
+            for (k, (kind, _, prm)) in x.2.iter().enumerate() {
+                m.tuple_objtype[adr + k] = *kind;
+                m.tuple_objid[adr + k] = self.tuple_ids[i][k];
+                m.tuple_objprm[adr + k] = *prm;
+            }
+            adr += x.2.len();
         }
 
         // sensors

@@ -838,6 +838,61 @@ fn read_assets(spec: &mut ModelSpec, el: &Element) -> R<()> {
     Ok(())
 }
 
+fn read_custom(spec: &mut ModelSpec, el: &Element) -> R<()> {
+    let c = &mut spec.custom;
+    for e in &el.children {
+        let mut name = String::new();
+        read_text(e, "name", &mut name)?;
+        match e.name.as_str() {
+            "numeric" => {
+                let mut size = 0;
+                let given = int(e, "size", &mut size)?;
+                let mut buf = vec![0.0; 501];
+                let cap = if given {
+                    size.clamp(0, 501) as usize
+                } else {
+                    501
+                };
+                let len = some_nums(e, "data", &mut buf[..cap])?;
+                if !given {
+                    size = len as i32;
+                }
+                if !(1..=500).contains(&size) {
+                    return Err(xerr(e, "custom field size must be between 1 and 500"));
+                }
+                buf.truncate(size as usize);
+                c.numerics.push((name, e.line, buf));
+            }
+            "text" => {
+                let mut data = String::new();
+                read_text(e, "data", &mut data)?;
+                if data.is_empty() {
+                    return Err(xerr(e, "text field cannot be empty"));
+                }
+                c.texts.push((name, e.line, data));
+            }
+            _ => {
+                let mut elems = Vec::new();
+                for o in e.children.iter().filter(|o| o.name == "element") {
+                    let mut t = String::new();
+                    read_text(o, "objtype", &mut t)?;
+                    let kind = obj_type(&t);
+                    if kind == 0 {
+                        return Err(xerr(o, "unknown object type"));
+                    }
+                    let mut oname = String::new();
+                    read_text(o, "objname", &mut oname)?;
+                    let mut prm = 0.0;
+                    num(o, "prm", &mut prm)?;
+                    elems.push((kind, oname, prm));
+                }
+                c.tuples.push((name, e.line, elems));
+            }
+        }
+    }
+    Ok(())
+}
+
 fn unsupported(el: &Element, what: &str) -> String {
     xerr(
         el,
@@ -1330,6 +1385,9 @@ pub fn read(root: &Element) -> R<ModelSpec> {
     for s in sections("default") {
         read_default(&mut spec, s, None)?;
     }
+    for s in sections("custom") {
+        read_custom(&mut spec, s)?;
+    }
     for s in sections("asset") {
         read_assets(&mut spec, s)?;
     }
@@ -1370,7 +1428,7 @@ pub fn read(root: &Element) -> R<ModelSpec> {
     for s in sections("keyframe") {
         read_keys(&mut spec, s)?;
     }
-    const KNOWN: [&str; 14] = [
+    const KNOWN: [&str; 15] = [
         "compiler",
         "option",
         "size",
@@ -1379,6 +1437,7 @@ pub fn read(root: &Element) -> R<ModelSpec> {
         "default",
         "worldbody",
         "asset",
+        "custom",
         "contact",
         "equality",
         "tendon",
