@@ -581,9 +581,11 @@ impl Default for Material {
 pub struct Custom {
     pub numerics: Vec<(String, Line, Vec<f64>)>,
     pub texts: Vec<(String, Line, String)>,
-    /// (name, line, [(mjtObj, object name, prm)])
-    pub tuples: Vec<(String, Line, Vec<(i32, String, f64)>)>,
+    pub tuples: Vec<(String, Line, Vec<TupleElement>)>,
 }
+
+/// One tuple element: mjtObj, object name, parameter.
+pub type TupleElement = (i32, String, f64);
 
 /// A default class: the values new elements of each kind start from.
 #[derive(Debug, Clone, Default)]
