@@ -101,6 +101,11 @@ unsafe fn load(filename: *const c_char, vfs: *const mjVFS) -> Result<*mut mjMode
         crate::abi::alloc::delete_model(m);
         return Err(format!("Error: engine error: {e}"));
     }
+    {
+        // SAFETY: as above; no other view of m is alive.
+        let mut mm = ModelMut::new(&mut *m);
+        compiler::auto_spring_damper(&compiled, &mut mm);
+    }
     compiler::finish(&compiled, &mut (*m).stat);
     Ok(m)
 }

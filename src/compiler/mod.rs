@@ -65,6 +65,12 @@ pub fn set_const(m: &mut mjModel) -> Result<(), EngineError> {
     crate::engine::setconst::set_const(m)
 }
 
+/// Joint stiffness and damping from `springdamper` (time constant, damping ratio), using the
+/// inverse weights `set_const` computed.
+pub fn auto_spring_damper(c: &Compiled, m: &mut ModelMut) {
+    c.auto_spring_damper(m);
+}
+
 /// Applies the user's `<statistic>` overrides after `set_const`.
 pub fn finish(c: &Compiled, stat: &mut mjStatistic) {
     let o = &c.stat_override;

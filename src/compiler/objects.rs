@@ -461,7 +461,6 @@ pub fn compile_joint(
                 "when defined, springdamper values must be positive in joint '{name}' (id = {id})"
             ));
         }
-        return Err("joint springdamper is not supported by this compiler yet".into());
     }
     if j.kind == JointType::Free {
         j.limited = 0;

@@ -1807,6 +1807,29 @@ fn normalize4_engine(q: &mut [f64]) {
 }
 
 impl Compiled {
+    pub fn auto_spring_damper(&self, m: &mut ModelMut) {
+        let max = |a: f64, b: f64| if a > b { a } else { b };
+        for (n, j) in self.joints.iter().enumerate() {
+            let [timeconst, dampratio] = j.spec.springdamper;
+            if timeconst <= 0.0 || dampratio <= 0.0 {
+                continue;
+            }
+            let adr = m.jnt_dofadr[n] as usize;
+            let ndim = j.spec.kind.nv();
+            let mut inertia = 0.0;
+            for i in 0..ndim {
+                inertia += m.dof_invweight0[adr + i];
+            }
+            inertia = ndim as f64 / max(MINVAL, inertia);
+            m.jnt_stiffness[n] =
+                inertia / max(MINVAL, timeconst * timeconst * dampratio * dampratio);
+            let damping = 2.0 * inertia / max(MINVAL, timeconst);
+            for i in 0..ndim {
+                m.dof_damping[adr + i] = damping;
+            }
+        }
+    }
+
     pub fn fill(&self, m: &mut ModelMut) {
         let h = &self.header;
         // names
