@@ -455,12 +455,11 @@ pub fn compile_joint(
     degree: bool,
 ) -> Result<usize, String> {
     let name = j.name.clone();
-    if j.springdamper[0] != 0.0 || j.springdamper[1] != 0.0 {
-        if j.springdamper[0] <= 0.0 || j.springdamper[1] <= 0.0 {
-            return Err(format!(
-                "when defined, springdamper values must be positive in joint '{name}' (id = {id})"
-            ));
-        }
+    let [tc, dr] = j.springdamper;
+    if (tc != 0.0 || dr != 0.0) && (tc <= 0.0 || dr <= 0.0) {
+        return Err(format!(
+            "when defined, springdamper values must be positive in joint '{name}' (id = {id})"
+        ));
     }
     if j.kind == JointType::Free {
         j.limited = 0;
