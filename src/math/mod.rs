@@ -12,6 +12,9 @@ pub mod quat;
 pub mod spatial;
 pub mod vec3;
 
+#[cfg(test)]
+mod tests;
+
 pub use eig3::{eig3, Eig3};
 pub use quat::*;
 pub use spatial::*;
