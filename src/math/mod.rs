@@ -11,6 +11,7 @@ pub mod qcqp;
 pub mod quat;
 pub mod spatial;
 pub mod vec3;
+pub mod wrap;
 
 #[cfg(test)]
 mod tests;
