@@ -5,10 +5,12 @@
 
 pub mod blas;
 pub mod chol;
+pub mod chol_sparse;
 pub mod eig3;
 pub mod misc;
 pub mod qcqp;
 pub mod quat;
+pub mod sparse;
 pub mod spatial;
 pub mod vec3;
 pub mod wrap;

@@ -500,3 +500,193 @@ fn wrap_matches_reference_file() {
         eprintln!("{n} wrap cases identical");
     }
 }
+
+#[test]
+fn sparse_products_match_dense() {
+    use super::sparse::*;
+    let (nr, nc) = (4, 5);
+    #[rustfmt::skip]
+    let a = [
+        1.0, 0.0, 2.0, 0.0, 0.0,
+        0.0, 0.0, 0.0, 0.0, 0.0,
+        0.0, 3.0, 0.0, -1.0, 0.5,
+        0.0, 3.0, 0.0, 2.0, 1.5,
+    ];
+    let (mut s, mut nnz, mut adr, mut col) = ([0.0; 20], [0; 4], [0; 4], [0; 20]);
+    dense2sparse(&mut s, &a, nr, nc, &mut nnz, &mut adr, &mut col);
+    assert_eq!(nnz, [2, 0, 3, 3]);
+    let mut back = [9.0; 20];
+    sparse2dense(&mut back, &s, nr, nc, &nnz, &adr, &col);
+    assert_eq!(back, a);
+
+    let v = [1.0, -1.0, 0.5, 2.0, -3.0];
+    let (mut y, mut yd) = ([0.0; 4], [0.0; 4]);
+    mul_mat_vec_sparse(&mut y, &s, &v, nr, &nnz, &adr, &col);
+    mul_mat_vec(&mut yd, &a, &v, nr, nc);
+    assert!(close(&y, &yd, 1e-15));
+
+    let (mut t, mut tn, mut ta, mut tc) = ([0.0; 20], [0; 5], [0; 5], [0; 20]);
+    transpose_sparse(
+        &mut t, &s, nr, nc, &mut tn, &mut ta, &mut tc, &nnz, &adr, &col,
+    );
+    let mut td = [0.0; 20];
+    sparse2dense(&mut td, &t, nc, nr, &tn, &ta, &tc);
+    let mut at = [0.0; 20];
+    transpose(&mut at, &a, nr, nc);
+    assert_eq!(td, at);
+
+    let mut sup = [0; 4];
+    super_sparse(nr, &mut sup, &nnz, &adr, &col);
+    assert_eq!(sup, [0, 0, 1, 0]);
+    let mut sup_t = [0; 5];
+    super_sparse(nc, &mut sup_t, &tn, &ta, &tc);
+
+    // A' * diag * A, with and without supernodes
+    let diag = [1.0, 2.0, 0.5, 3.0];
+    let mut dense = [0.0; 25];
+    sqr_mat_td(&mut dense, &a, Some(&diag), nr, nc);
+    for use_super in [false, true] {
+        let m = SparseRef {
+            rownnz: &nnz,
+            rowadr: &adr,
+            colind: &col,
+            rowsuper: use_super.then_some(&sup[..]),
+        };
+        let mt = SparseRef {
+            rownnz: &tn,
+            rowadr: &ta,
+            colind: &tc,
+            rowsuper: use_super.then_some(&sup_t[..]),
+        };
+        let (mut h, mut hn, mut ha, mut hc) = ([0.0; 25], [0; 5], [0; 5], [0; 25]);
+        let (mut chain, mut buffer) = ([0; 10], [0.0; 5]);
+        sqr_mat_td_sparse(
+            &mut h,
+            &s,
+            &t,
+            Some(&diag),
+            nc,
+            &mut hn,
+            &mut ha,
+            &mut hc,
+            &m,
+            &mt,
+            &mut chain,
+            &mut buffer,
+        );
+        let mut hd = [0.0; 25];
+        sparse2dense(&mut hd, &h, nc, nc, &hn, &ha, &hc);
+        assert!(close(&hd, &dense, 1e-14), "{hd:?}");
+    }
+
+    // combining sparse rows
+    let (mut dst, mut di) = ([1.0, 2.0, 0.0, 0.0], [0, 2, 0, 0]);
+    let (mut buf, mut bi) = ([0.0; 5], [0; 5]);
+    let n = combine_sparse(
+        &mut dst,
+        &[4.0, 5.0],
+        5,
+        2.0,
+        -1.0,
+        2,
+        2,
+        &mut di,
+        &[2, 4],
+        &mut buf,
+        &mut bi,
+    );
+    assert_eq!(
+        (n, &dst[..3], &di[..3]),
+        (3, &[2.0, 0.0, -5.0][..], &[0, 2, 4][..])
+    );
+    assert_eq!(dot_sparse2(&dst, &[1.0, 1.0], 3, &di, 2, &[0, 4]), -3.0);
+}
+
+#[test]
+fn sparse_cholesky_and_lu_solve() {
+    use super::chol_sparse::*;
+    // symmetric positive definite with a tree pattern (parents 0 <- 1, 0 <- 3; 2 alone),
+    // uncompressed (stride n) layout
+    let n = 4;
+    #[rustfmt::skip]
+    let dense = [
+        4.0, 1.0, 0.0, 0.5,
+        1.0, 3.0, 0.0, 0.0,
+        0.0, 0.0, 2.0, 0.0,
+        0.5, 0.0, 0.0, 5.0,
+    ];
+    let mut mat = [0.0; 16];
+    let mut colind = [0; 16];
+    let mut rownnz = [0; 4];
+    let rowadr = [0, 4, 8, 12];
+    for r in 0..n {
+        for c in 0..n {
+            if dense[r * n + c] != 0.0 {
+                let k = rowadr[r] as usize + rownnz[r] as usize;
+                mat[k] = dense[r * n + c];
+                colind[k] = c as i32;
+                rownnz[r] += 1;
+            }
+        }
+    }
+    let (lu_mat, lu_nnz, lu_col) = (mat, rownnz, colind);
+    let (mut buf, mut bi) = ([0.0; 4], [0; 4]);
+    let rank = chol_factor_sparse(
+        &mut mat,
+        n,
+        1e-15,
+        &mut rownnz,
+        &rowadr,
+        &mut colind,
+        &mut buf,
+        &mut bi,
+    );
+    assert_eq!(rank, Ok(4));
+    let b = [1.0, -2.0, 0.5, 3.0];
+    let mut x = [0.0; 4];
+    chol_solve_sparse(&mut x, &mat, &b, n, &rownnz, &rowadr, &colind);
+    let mut ax = [0.0; 4];
+    mul_mat_vec(&mut ax, &dense, &x, n, n);
+    assert!(close(&ax, &b, 1e-14));
+
+    // update: factor of A + v v' with v inside the pattern
+    let (mut v, mut vi) = ([0.5, 0.2], [0, 3]);
+    let mut up = mat;
+    let r = chol_update_sparse(
+        &mut up, &mut v, n, true, &rownnz, &rowadr, &colind, 2, &mut vi, &mut buf, &mut bi,
+    );
+    assert_eq!(r, Ok(4));
+    let mut dense2 = dense;
+    dense2[0] += 0.25;
+    dense2[3] += 0.1;
+    dense2[12] += 0.1;
+    dense2[15] += 0.04;
+    chol_solve_sparse(&mut x, &up, &b, n, &rownnz, &rowadr, &colind);
+    mul_mat_vec(&mut ax, &dense2, &x, n, n);
+    assert!(close(&ax, &b, 1e-14));
+
+    // LU on the same pattern, compressed layout
+    let mut lu = [0.0; 16];
+    let mut col = [0; 16];
+    let mut adr = [0; 4];
+    let mut k = 0;
+    for r in 0..n {
+        adr[r] = k as i32;
+        for i in 0..lu_nnz[r] as usize {
+            lu[k] = lu_mat[4 * r + i];
+            col[k] = lu_col[4 * r + i];
+            k += 1;
+        }
+    }
+    let mut scratch = [0; 4];
+    assert_eq!(
+        factor_lu_sparse(&mut lu, n, &mut scratch, &lu_nnz, &adr, &col),
+        Ok(())
+    );
+    assert_eq!(
+        solve_lu_sparse(&mut x, &lu, &b, n, &lu_nnz, &adr, &col),
+        Ok(())
+    );
+    mul_mat_vec(&mut ax, &dense, &x, n, n);
+    assert!(close(&ax, &b, 1e-14));
+}
