@@ -318,6 +318,12 @@ pub unsafe extern "C" fn mju_addScl(
 
 #[no_mangle]
 pub unsafe extern "C" fn mju_normalize(res: *mut mjtNum, n: c_int) -> mjtNum {
+    nonnull!(0.0; res);
+    if n <= 0 {
+        // 2.2.2 sees a zero norm and still sets the first element
+        *res = 1.0;
+        return 0.0;
+    }
     blas::normalize(sl_mut(res, len(n)))
 }
 
@@ -749,6 +755,8 @@ pub unsafe extern "C" fn mju_decodePyramid(
     nonnull!(force, pyramid, mu);
     let dim = len(dim);
     if dim < 1 {
+        // 2.2.2 clears the normal force and sums no edges
+        *force = 0.0;
         return;
     }
     let p: Vec<f64> = sl(pyramid, if dim == 1 { 1 } else { 2 * (dim - 1) }).to_vec();
