@@ -60,6 +60,42 @@ void *mju_malloc(size_t size);
 
 void mju_free(void *ptr);
 
+int mj_version(void);
+
+const char *mj_versionString(void);
+
+void mj_defaultLROpt(mjLROpt *opt);
+
+void mj_defaultSolRefImp(mjtNum *solref, mjtNum *solimp);
+
+void mj_defaultOption(mjOption *opt);
+
+void mj_defaultVisual(mjVisual *vis);
+
+mjModel *mj_copyModel(mjModel *dest, const mjModel *src);
+
+void mj_deleteModel(mjModel *m);
+
+int mj_sizeModel(const mjModel *m);
+
+mjData *mj_makeData(const mjModel *m);
+
+mjData *mj_copyData(mjData *dest, const mjModel *m, const mjData *src);
+
+void mj_resetData(const mjModel *m, mjData *d);
+
+void mj_resetDataDebug(const mjModel *m, mjData *d, unsigned char debug_value);
+
+void mj_resetDataKeyframe(const mjModel *m, mjData *d, int key);
+
+void mj_deleteData(mjData *d);
+
+mjtNum *mj_stackAlloc(mjData *d, int size);
+
+void mj_saveModel(const mjModel *m, const char *filename, void *buffer, int buffer_sz);
+
+mjModel *mj_loadModel(const char *filename, const mjVFS *vfs);
+
 void mj_defaultVFS(mjVFS *vfs);
 
 int mj_addFileVFS(mjVFS *vfs, const char *directory, const char *filename);
@@ -94,38 +130,6 @@ void mj_forwardSkip(const mjModel *m, mjData *d, int skipstage, int skipsensor);
 
 void mj_inverseSkip(const mjModel *m, mjData *d, int skipstage, int skipsensor);
 
-void mj_defaultLROpt(mjLROpt *opt);
-
-void mj_defaultSolRefImp(mjtNum *solref, mjtNum *solimp);
-
-void mj_defaultOption(mjOption *opt);
-
-void mj_defaultVisual(mjVisual *vis);
-
-mjModel *mj_copyModel(mjModel *dest, const mjModel *src);
-
-void mj_saveModel(const mjModel *m, const char *filename, void *buffer, int buffer_sz);
-
-mjModel *mj_loadModel(const char *filename, const mjVFS *vfs);
-
-void mj_deleteModel(mjModel *m);
-
-int mj_sizeModel(const mjModel *m);
-
-mjData *mj_makeData(const mjModel *m);
-
-mjData *mj_copyData(mjData *dest, const mjModel *m, const mjData *src);
-
-void mj_resetData(const mjModel *m, mjData *d);
-
-void mj_resetDataDebug(const mjModel *m, mjData *d, unsigned char debug_value);
-
-void mj_resetDataKeyframe(const mjModel *m, mjData *d, int key);
-
-mjtNum *mj_stackAlloc(mjData *d, int size);
-
-void mj_deleteData(mjData *d);
-
 void mj_resetCallbacks(void);
 
 void mj_setConst(mjModel *m, mjData *d);
@@ -136,17 +140,6 @@ int mj_setLengthRange(mjModel *m,
                       const mjLROpt *opt,
                       char *error,
                       int error_sz);
-
-void mj_printFormattedModel(const mjModel *m, const char *filename, const char *float_format);
-
-void mj_printModel(const mjModel *m, const char *filename);
-
-void mj_printFormattedData(const mjModel *m,
-                           mjData *d,
-                           const char *filename,
-                           const char *float_format);
-
-void mj_printData(const mjModel *m, mjData *d, const char *filename);
 
 void mj_fwdPosition(const mjModel *m, mjData *d);
 
@@ -323,10 +316,6 @@ mjtNum mj_getTotalmass(const mjModel *m);
 
 void mj_setTotalmass(mjModel *m, mjtNum newmass);
 
-int mj_version(void);
-
-const char *mj_versionString(void);
-
 mjtNum mj_ray(const mjModel *m,
               const mjData *d,
               const mjtNum *pnt,
@@ -377,6 +366,17 @@ void mjd_transitionFD(const mjModel *m,
                       mjtNum *B,
                       mjtNum *C,
                       mjtNum *D);
+
+void mj_printFormattedModel(const mjModel *m, const char *filename, const char *float_format);
+
+void mj_printModel(const mjModel *m, const char *filename);
+
+void mj_printFormattedData(const mjModel *m,
+                           mjData *d,
+                           const char *filename,
+                           const char *float_format);
+
+void mj_printData(const mjModel *m, mjData *d, const char *filename);
 
 void mju_zero3(mjtNum *res);
 

@@ -1,45 +1,11 @@
 //! Entry points of the 2.2.2 API not implemented yet: each reports that through `mju_error`.
 
-#![allow(unused_variables)]
+#![allow(unused_variables, unused_imports)]
 
 use crate::abi::*;
 use std::os::raw::{c_char, c_int, c_void};
 
 use super::pending;
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_defaultVFS(vfs: *mut mjVFS) {
-    pending("mj_defaultVFS");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_addFileVFS(vfs: *mut mjVFS, directory: *const c_char, filename: *const c_char) -> c_int {
-    pending("mj_addFileVFS");
-    0 as c_int
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_makeEmptyFileVFS(vfs: *mut mjVFS, filename: *const c_char, filesize: c_int) -> c_int {
-    pending("mj_makeEmptyFileVFS");
-    0 as c_int
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_findFileVFS(vfs: *const mjVFS, filename: *const c_char) -> c_int {
-    pending("mj_findFileVFS");
-    0 as c_int
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_deleteFileVFS(vfs: *mut mjVFS, filename: *const c_char) -> c_int {
-    pending("mj_deleteFileVFS");
-    0 as c_int
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_deleteVFS(vfs: *mut mjVFS) {
-    pending("mj_deleteVFS");
-}
 
 #[no_mangle]
 pub unsafe extern "C" fn mj_loadXML(filename: *const c_char, vfs: *const mjVFS, error: *mut c_char, error_sz: c_int) -> *mut mjModel {
@@ -100,92 +66,6 @@ pub unsafe extern "C" fn mj_inverseSkip(m: *const mjModel, d: *mut mjData, skips
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_defaultLROpt(opt: *mut mjLROpt) {
-    pending("mj_defaultLROpt");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_defaultSolRefImp(solref: *mut mjtNum, solimp: *mut mjtNum) {
-    pending("mj_defaultSolRefImp");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_defaultOption(opt: *mut mjOption) {
-    pending("mj_defaultOption");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_defaultVisual(vis: *mut mjVisual) {
-    pending("mj_defaultVisual");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_copyModel(dest: *mut mjModel, src: *const mjModel) -> *mut mjModel {
-    pending("mj_copyModel");
-    std::ptr::null_mut()
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_saveModel(m: *const mjModel, filename: *const c_char, buffer: *mut c_void, buffer_sz: c_int) {
-    pending("mj_saveModel");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_loadModel(filename: *const c_char, vfs: *const mjVFS) -> *mut mjModel {
-    pending("mj_loadModel");
-    std::ptr::null_mut()
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_deleteModel(m: *mut mjModel) {
-    pending("mj_deleteModel");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_sizeModel(m: *const mjModel) -> c_int {
-    pending("mj_sizeModel");
-    0 as c_int
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_makeData(m: *const mjModel) -> *mut mjData {
-    pending("mj_makeData");
-    std::ptr::null_mut()
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_copyData(dest: *mut mjData, m: *const mjModel, src: *const mjData) -> *mut mjData {
-    pending("mj_copyData");
-    std::ptr::null_mut()
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_resetData(m: *const mjModel, d: *mut mjData) {
-    pending("mj_resetData");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_resetDataDebug(m: *const mjModel, d: *mut mjData, debug_value: std::os::raw::c_uchar) {
-    pending("mj_resetDataDebug");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_resetDataKeyframe(m: *const mjModel, d: *mut mjData, key: c_int) {
-    pending("mj_resetDataKeyframe");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_stackAlloc(d: *mut mjData, size: c_int) -> *mut mjtNum {
-    pending("mj_stackAlloc");
-    std::ptr::null_mut()
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_deleteData(d: *mut mjData) {
-    pending("mj_deleteData");
-}
-
-#[no_mangle]
 pub unsafe extern "C" fn mj_resetCallbacks() {
     pending("mj_resetCallbacks");
 }
@@ -199,26 +79,6 @@ pub unsafe extern "C" fn mj_setConst(m: *mut mjModel, d: *mut mjData) {
 pub unsafe extern "C" fn mj_setLengthRange(m: *mut mjModel, d: *mut mjData, index: c_int, opt: *const mjLROpt, error: *mut c_char, error_sz: c_int) -> c_int {
     pending("mj_setLengthRange");
     0 as c_int
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_printFormattedModel(m: *const mjModel, filename: *const c_char, float_format: *const c_char) {
-    pending("mj_printFormattedModel");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_printModel(m: *const mjModel, filename: *const c_char) {
-    pending("mj_printModel");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_printFormattedData(m: *const mjModel, d: *mut mjData, filename: *const c_char, float_format: *const c_char) {
-    pending("mj_printFormattedData");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_printData(m: *const mjModel, d: *mut mjData, filename: *const c_char) {
-    pending("mj_printData");
 }
 
 #[no_mangle]
@@ -561,18 +421,6 @@ pub unsafe extern "C" fn mj_getTotalmass(m: *const mjModel) -> mjtNum {
 #[no_mangle]
 pub unsafe extern "C" fn mj_setTotalmass(m: *mut mjModel, newmass: mjtNum) {
     pending("mj_setTotalmass");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_version() -> c_int {
-    pending("mj_version");
-    0 as c_int
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_versionString() -> *const c_char {
-    pending("mj_versionString");
-    std::ptr::null()
 }
 
 #[no_mangle]

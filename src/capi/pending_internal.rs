@@ -1,6 +1,6 @@
 //! Symbols 2.2.2 exports outside mujoco.h not implemented yet: each reports that through `mju_error`.
 
-#![allow(unused_variables)]
+#![allow(unused_variables, unused_imports)]
 
 use crate::abi::*;
 use std::os::raw::{c_char, c_int, c_void};
@@ -51,12 +51,6 @@ pub unsafe extern "C" fn mj_solveLD(m: *const mjModel, x: *mut mjtNum, y: *const
 #[no_mangle]
 pub unsafe extern "C" fn mj_stepSkip(m: *const mjModel, d: *mut mjData, skipstage: c_int, skipsensor: c_int) {
     pending("mj_stepSkip");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_validateReferences(m: *const mjModel) -> *const c_char {
-    pending("mj_validateReferences");
-    std::ptr::null()
 }
 
 #[no_mangle]
