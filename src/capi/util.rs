@@ -1,8 +1,9 @@
 //! C entry points of the mju_ utility functions: thin wrappers over `crate::math`.
 //!
 //! Fixed-size arguments are read into local arrays before each result is written, in the order
-//! 2.2.2 writes them, so a result aliasing an input gives 2.2.2's answer. Variable-size inputs
-//! overlapping the result are copied first.
+//! 2.2.2 writes them, so a result aliasing an input gives 2.2.2's answer. The same holds for
+//! mju_mulMatVec, mju_mulMatMatT and mju_transpose; other variable-size inputs overlapping the
+//! result are copied first (2.2.2 would read partly overwritten inputs there).
 //! NULL pointers (where C would crash) make a call return without effect.
 
 use super::guard;
@@ -378,12 +379,13 @@ pub unsafe extern "C" fn mju_mulMatTVec(
 #[no_mangle]
 pub unsafe extern "C" fn mju_transpose(res: *mut mjtNum, mat: *const mjtNum, nr: c_int, nc: c_int) {
     nonnull!(res, mat);
-    let n = len(nr) * len(nc);
-    let mut bm = Vec::new();
-    let m = input(mat, n, res, n, &mut bm);
-    run("mju_transpose", (), || {
-        blas::transpose(sl_mut(res, n), m, len(nr), len(nc))
-    });
+    let (nr, nc) = (len(nr), len(nc));
+    // element by element in 2.2.2's order, so that in-place calls give 2.2.2's result
+    for i in 0..nr {
+        for j in 0..nc {
+            *res.add(j * nr + i) = *mat.add(i * nc + j);
+        }
+    }
 }
 
 #[no_mangle]
