@@ -4,6 +4,7 @@
 //! so that results agree bit for bit with the reference.
 
 pub mod blas;
+pub mod ccd;
 pub mod chol;
 pub mod chol_sparse;
 pub mod eig3;

@@ -690,3 +690,59 @@ fn sparse_cholesky_and_lu_solve() {
     mul_mat_vec(&mut ax, &dense, &x, n, n);
     assert!(close(&ax, &b, 1e-14));
 }
+
+#[test]
+fn mpr_spheres_and_boxes() {
+    use super::ccd::*;
+    let sphere = |c: Vec3, r: f64| {
+        move |d: &Vec3| {
+            let n = norm3(d);
+            [
+                c[0] + r * d[0] / n,
+                c[1] + r * d[1] / n,
+                c[2] + r * d[2] / n,
+            ]
+        }
+    };
+    // overlapping spheres along x: depth 0.3, direction +-x
+    let mut pair = ConvexPair {
+        center1: [0.0; 3],
+        center2: [0.9, 0.0, 0.0],
+        support1: sphere([0.0; 3], 0.5),
+        support2: sphere([0.9, 0.0, 0.0], 0.7),
+        max_iterations: 50,
+        tolerance: 1e-9,
+    };
+    let (depth, dir, pos) = pair.mpr_penetration().unwrap();
+    assert!((depth - 0.3).abs() < 1e-6, "{depth}");
+    assert!((dir[0].abs() - 1.0).abs() < 1e-6 && dir[1].abs() < 1e-3 && dir[2].abs() < 1e-3);
+    assert!((pos[0] - 0.35).abs() < 1e-3, "{pos:?}");
+
+    // separated boxes: no penetration
+    let cube = |c: Vec3, h: f64| {
+        move |d: &Vec3| {
+            let s = |x: f64| if x >= 0.0 { h } else { -h };
+            [c[0] + s(d[0]), c[1] + s(d[1]), c[2] + s(d[2])]
+        }
+    };
+    let mut apart = ConvexPair {
+        center1: [0.0; 3],
+        center2: [0.0, 0.0, 1.5],
+        support1: cube([0.0; 3], 0.5),
+        support2: cube([0.0, 0.0, 1.5], 0.5),
+        max_iterations: 50,
+        tolerance: 1e-6,
+    };
+    assert!(apart.mpr_penetration().is_none());
+
+    let (d2, w) = point_tri_dist2(
+        &[0.2, 0.2, 1.0],
+        &[0.0; 3],
+        &[1.0, 0.0, 0.0],
+        &[0.0, 1.0, 0.0],
+    );
+    assert!((d2 - 1.0).abs() < 1e-15 && close(&w, &[0.2, 0.2, 0.0], 1e-15));
+    let (d2, w) = point_segment_dist2(&[2.0, 1.0, 0.0], &[0.0; 3], &[1.0, 0.0, 0.0]);
+    assert_eq!((d2, w), (2.0, [1.0, 0.0, 0.0]));
+    assert!(eq(1.0, 1.0 + f64::EPSILON / 2.0) && !eq(1.0, 1.0 + 4.0 * f64::EPSILON));
+}
