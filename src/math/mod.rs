@@ -7,6 +7,7 @@ pub mod blas;
 pub mod ccd;
 pub mod chol;
 pub mod chol_sparse;
+pub mod collide;
 pub mod eig3;
 pub mod misc;
 pub mod qcqp;

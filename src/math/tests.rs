@@ -746,3 +746,74 @@ fn mpr_spheres_and_boxes() {
     assert_eq!((d2, w), (2.0, [1.0, 0.0, 0.0]));
     assert!(eq(1.0, 1.0 + f64::EPSILON / 2.0) && !eq(1.0, 1.0 + 4.0 * f64::EPSILON));
 }
+
+#[test]
+fn primitive_collisions() {
+    use super::collide::*;
+    let eye = [1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0];
+    let plane = GeomPose {
+        pos: [0.0; 3],
+        mat: eye,
+        size: [0.0; 3],
+    };
+    let mut con = [ContactGeom::default(); 4];
+
+    let ball = GeomPose {
+        pos: [0.0, 0.0, 0.08],
+        mat: eye,
+        size: [0.1, 0.0, 0.0],
+    };
+    assert_eq!(plane_sphere(&plane, &ball, 0.0, &mut con), 1);
+    assert!((con[0].dist + 0.02).abs() < 1e-15);
+    assert!(close(&con[0].pos, &[0.0, 0.0, -0.01], 1e-15));
+    assert_eq!(con[0].frame, [0.0, 0.0, 1.0, 0.0, 0.0, 0.0]);
+
+    // box resting 1 mm into the plane: four corners
+    let cube = GeomPose {
+        pos: [0.0, 0.0, 0.099],
+        mat: eye,
+        size: [0.1; 3],
+    };
+    assert_eq!(plane_box(&plane, &cube, 0.0, &mut con), 4);
+    assert!(con.iter().all(|c| (c.dist + 0.001).abs() < 1e-12));
+
+    // vertical capsule: only the lower end touches, tangent along the axis
+    let cap = GeomPose {
+        pos: [0.0, 0.0, 0.25],
+        mat: eye,
+        size: [0.05, 0.2, 0.0],
+    };
+    assert_eq!(plane_capsule(&plane, &cap, 0.01, &mut con), 1);
+    assert_eq!(&con[0].frame[3..], &[0.0, 0.0, 1.0]);
+
+    // cylinder standing on its disk: one rim point and two more of the inscribed triangle
+    let cyl = GeomPose {
+        pos: [0.0, 0.0, 0.099],
+        mat: eye,
+        size: [0.2, 0.1, 0.0],
+    };
+    assert_eq!(plane_cylinder(&plane, &cyl, 0.0, &mut con), 3);
+
+    // parallel capsules side by side: two contacts
+    let c1 = GeomPose {
+        pos: [0.0; 3],
+        mat: eye,
+        size: [0.1, 0.3, 0.0],
+    };
+    let c2 = GeomPose {
+        pos: [0.15, 0.0, 0.0],
+        mat: eye,
+        size: [0.1, 0.3, 0.0],
+    };
+    assert_eq!(capsule_capsule(&c1, &c2, 0.0, &mut con), 2);
+    assert!((con[0].dist + 0.05).abs() < 1e-15 && con[0].normal() == [1.0, 0.0, 0.0]);
+
+    let s = GeomPose {
+        pos: [0.0, 0.12, 0.2],
+        mat: eye,
+        size: [0.05, 0.0, 0.0],
+    };
+    assert_eq!(sphere_capsule(&s, &c1, 0.0, &mut con), 1);
+    assert!((con[0].dist + 0.03).abs() < 1e-15);
+    assert_eq!(sphere_sphere(&s, &ball, 0.0, &mut con), 0);
+}
