@@ -1,5 +1,5 @@
 //! Narrow-phase collisions between primitive geoms (plane, sphere, capsule, cylinder, box
-//! against plane; sphere and capsule pairs) with 2.2.2's arithmetic.
+//! against plane; sphere and capsule pairs; sphere and box) with 2.2.2's arithmetic.
 //!
 //! Each function writes contacts into `con` (which must hold the maximum for the pair: 1 for
 //! sphere pairs, 2 for capsules, 4 otherwise) and returns their number. Like 2.2.2 they may
@@ -353,4 +353,57 @@ pub fn capsule_capsule(
         return n;
     }
     n + end(&mut con[n], false, -1.0)
+}
+
+/// Sphere (g1) and box (g2).
+pub fn sphere_box(g1: &GeomPose, g2: &GeomPose, margin: f64, con: &mut [ContactGeom]) -> usize {
+    use super::vec3::{mul_mat_t_vec3, mul_mat_vec3};
+    let (size1, size2) = (&g1.size, &g2.size);
+    let center = mul_mat_t_vec3(&g2.mat, &sub3(&g1.pos, &g2.pos));
+    let mut clamped = center;
+    for i in 0..3 {
+        let l = size2[i];
+        if l > 0.0 {
+            if clamped[i] < -l {
+                clamped[i] = -l;
+            } else if clamped[i] > l {
+                clamped[i] = l;
+            }
+        }
+    }
+    let (dir, dist) = normalize3(&sub3(&clamped, &center));
+    if dist - size1[0] > margin {
+        return 0;
+    }
+
+    let (pos, normal) = if dist <= MINVAL {
+        // center inside the box: push out through the nearest face
+        let mut closest = (size2[0] + size2[1] + size2[2]) * 2.0;
+        let mut k = 0;
+        for i in 0..6 {
+            let face = if i % 2 == 1 { size2[i / 2] } else { -size2[i / 2] };
+            let d = (face - center[i / 2]).abs();
+            if closest > d {
+                closest = d;
+                k = i;
+            }
+        }
+        let mut nearest = [0.0; 3];
+        nearest[k / 2] = if k % 2 == 1 { -1.0 } else { 1.0 };
+        (add_scl(&center, &nearest, (size1[0] - closest) / 2.0), nearest)
+    } else {
+        let deepest = add_scl(&center, &dir, size1[0]);
+        let mut pos = [0.0; 3];
+        for i in 0..3 {
+            pos[i] = (0.0 + clamped[i] * 0.5) + deepest[i] * 0.5;
+        }
+        (pos, dir)
+    };
+
+    let c = &mut con[0];
+    c.set_normal(&mul_mat_vec3(&g2.mat, &normal));
+    c.pos = add3(&mul_mat_vec3(&g2.mat, &pos), &g2.pos);
+    c.dist = dist - size1[0];
+    c.set_tangent(&[0.0; 3]);
+    1
 }
