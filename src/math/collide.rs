@@ -381,7 +381,11 @@ pub fn sphere_box(g1: &GeomPose, g2: &GeomPose, margin: f64, con: &mut [ContactG
         let mut closest = (size2[0] + size2[1] + size2[2]) * 2.0;
         let mut k = 0;
         for i in 0..6 {
-            let face = if i % 2 == 1 { size2[i / 2] } else { -size2[i / 2] };
+            let face = if i % 2 == 1 {
+                size2[i / 2]
+            } else {
+                -size2[i / 2]
+            };
             let d = (face - center[i / 2]).abs();
             if closest > d {
                 closest = d;
@@ -390,7 +394,10 @@ pub fn sphere_box(g1: &GeomPose, g2: &GeomPose, margin: f64, con: &mut [ContactG
         }
         let mut nearest = [0.0; 3];
         nearest[k / 2] = if k % 2 == 1 { -1.0 } else { 1.0 };
-        (add_scl(&center, &nearest, (size1[0] - closest) / 2.0), nearest)
+        (
+            add_scl(&center, &nearest, (size1[0] - closest) / 2.0),
+            nearest,
+        )
     } else {
         let deepest = add_scl(&center, &dir, size1[0]);
         let mut pos = [0.0; 3];
