@@ -1,5 +1,6 @@
 //! Narrow-phase collisions between primitive geoms (plane, sphere, capsule, cylinder, box
-//! against plane; sphere and capsule pairs; sphere and box) with 2.2.2's arithmetic.
+//! against plane; sphere and capsule pairs; sphere and capsule against box) with 2.2.2's
+//! arithmetic.
 //!
 //! Each function writes contacts into `con` (which must hold the maximum for the pair: 1 for
 //! sphere pairs, 2 for capsules, 4 otherwise) and returns their number. Like 2.2.2 they may
@@ -357,9 +358,15 @@ pub fn capsule_capsule(
 
 /// Sphere (g1) and box (g2).
 pub fn sphere_box(g1: &GeomPose, g2: &GeomPose, margin: f64, con: &mut [ContactGeom]) -> usize {
+    sphere_box_at(&mut con[0], margin, &g1.pos, g1.size[0], g2)
+}
+
+/// Sphere of radius r at p and box g2.
+fn sphere_box_at(con: &mut ContactGeom, margin: f64, p: &Vec3, r: f64, g2: &GeomPose) -> usize {
     use super::vec3::{mul_mat_t_vec3, mul_mat_vec3};
-    let (size1, size2) = (&g1.size, &g2.size);
-    let center = mul_mat_t_vec3(&g2.mat, &sub3(&g1.pos, &g2.pos));
+    let size2 = &g2.size;
+    let size1 = [r];
+    let center = mul_mat_t_vec3(&g2.mat, &sub3(p, &g2.pos));
     let mut clamped = center;
     for i in 0..3 {
         let l = size2[i];
@@ -407,10 +414,278 @@ pub fn sphere_box(g1: &GeomPose, g2: &GeomPose, margin: f64, con: &mut [ContactG
         (pos, dir)
     };
 
-    let c = &mut con[0];
+    let c = con;
     c.set_normal(&mul_mat_vec3(&g2.mat, &normal));
     c.pos = add3(&mul_mat_vec3(&g2.mat, &pos), &g2.pos);
     c.dist = dist - size1[0];
     c.set_tangent(&[0.0; 3]);
     1
+}
+
+/// Capsule (g1) and box (g2): the segment point closest to the box, plus a second point along
+/// the capsule when it lies along an edge or face (2.2.2's heuristics), each tested as a sphere.
+pub fn capsule_box(g1: &GeomPose, g2: &GeomPose, margin: f64, con: &mut [ContactGeom]) -> usize {
+    use super::vec3::{mul_mat_t_vec3, mul_mat_vec3};
+    let (size1, size2) = (&g1.size, &g2.size);
+    let halflength = size1[1];
+    let mut secondpos = -4.0;
+
+    // capsule center and axis in the box frame
+    let pos = mul_mat_t_vec3(&g2.mat, &sub3(&g1.pos, &g2.pos));
+    let axis = mul_mat_t_vec3(&g2.mat, &zaxis(&g1.mat));
+    let halfaxis = scl3(&axis, halflength);
+    let mut axisdir = 0usize;
+    for (k, h) in halfaxis.iter().enumerate() {
+        if *h > 0.0 {
+            axisdir += 1 << k;
+        }
+    }
+
+    let bestdistmax = margin + 2.0 * (size1[0] + halflength + size2[0] + size2[1] + size2[2]);
+    let mut bestdist = bestdistmax;
+    let mut bestsegmentpos = 0.0;
+    let mut bestboxpos = 0.0;
+    let mut cltype: i32 = -4;
+    let mut clface: i32 = -1;
+    let mut clcorner: usize = 0;
+    let mut cledge: usize = 0;
+
+    // an end of the segment against a face
+    for i in [-1.0f64, 1.0] {
+        let end = add_scl(&pos, &halfaxis, i);
+        let mut clamped = end;
+        let (mut nclamp, mut face) = (0, -1);
+        for j in 0..3 {
+            if clamped[j] < -size2[j] {
+                nclamp += 1;
+                face = j as i32;
+                clamped[j] = -size2[j];
+            } else if clamped[j] > size2[j] {
+                nclamp += 1;
+                face = j as i32;
+                clamped[j] = size2[j];
+            }
+        }
+        if nclamp > 1 {
+            continue;
+        }
+        let d = sub3(&clamped, &end);
+        let dist = dot3(&d, &d);
+        if dist < bestdist {
+            bestdist = dist;
+            bestsegmentpos = i;
+            cltype = -2 + i as i32;
+            clface = face;
+        }
+    }
+
+    // the segment against each edge
+    for j in 0..3 {
+        for i in 0..8usize {
+            if i & (1 << j) != 0 {
+                continue;
+            }
+            let sgn = |bit: usize| if i & bit != 0 { 1.0 } else { -1.0 };
+            let mut corner = [sgn(1) * size2[0], sgn(2) * size2[1], sgn(4) * size2[2]];
+            corner[j] = 0.0;
+            let dif = sub3(&corner, &pos);
+            let ma = size2[j] * size2[j];
+            let mb = -size2[j] * halfaxis[j];
+            let mc = size1[1] * size1[1];
+            let u = -size2[j] * dif[j];
+            let v = dot3(&halfaxis, &dif);
+            let det = ma * mc - mb * mb;
+            if det.abs() < MINVAL {
+                continue;
+            }
+            let idet = 1.0 / det;
+            let mut x1 = (mc * u - mb * v) * idet;
+            let mut x2 = (ma * v - mb * u) * idet;
+            let (mut s1, mut s2) = (1, 1);
+            if x1 > 1.0 {
+                x1 = 1.0;
+                s1 = 2;
+                x2 = (v - mb) * (1.0 / mc);
+            } else if x1 < -1.0 {
+                x1 = -1.0;
+                s1 = 0;
+                x2 = (v + mb) * (1.0 / mc);
+            }
+            let clamp_x1 = |x1: f64, s1: &mut i32| {
+                if x1 > 1.0 {
+                    *s1 = 2;
+                    1.0
+                } else if x1 < -1.0 {
+                    *s1 = 0;
+                    -1.0
+                } else {
+                    x1
+                }
+            };
+            if x2 > 1.0 {
+                x2 = 1.0;
+                s2 = 2;
+                x1 = clamp_x1((u - mb) * (1.0 / ma), &mut s1);
+            } else if x2 < -1.0 {
+                x2 = -1.0;
+                s2 = 0;
+                x1 = clamp_x1((u + mb) * (1.0 / ma), &mut s1);
+            }
+
+            let mut d = add_scl(&dif, &halfaxis, -x2);
+            d[j] += size2[j] * x1;
+            let dist = dot3(&d, &d);
+            let c1 = s1 * 3 + s2;
+            if dist < bestdist - MINVAL {
+                bestdist = dist;
+                bestsegmentpos = x2;
+                bestboxpos = x1;
+                clcorner = i + (1 << j) * (c1 / 6) as usize;
+                cledge = j;
+                cltype = c1;
+            }
+        }
+    }
+
+    if cltype == -4 {
+        return 0;
+    }
+
+    let second = if cltype >= 0 && cltype / 3 != 1 {
+        // closest to a box corner
+        corner_second(axisdir ^ clcorner, &axis, &halfaxis, size2, bestsegmentpos)
+    } else if cltype >= 0 {
+        // closest to the middle of a box edge
+        edge_second(
+            axisdir,
+            clcorner,
+            cledge,
+            &axis,
+            &halfaxis,
+            size2,
+            bestsegmentpos,
+            bestboxpos,
+        )
+    } else if clface == -1 {
+        None
+    } else {
+        // an end is closest to a face: the farthest point still above that face
+        let mul = if cltype == -3 { 1.0 } else { -1.0 };
+        let mut sp = 2.0;
+        let other = add_scl(&pos, &halfaxis, -mul);
+        for i in 0..3 {
+            if i as i32 != clface {
+                for lim in [size2[i], -size2[i]] {
+                    let e = (lim - other[i]) / halfaxis[i] * mul;
+                    if e > 0.0 && e < sp {
+                        sp = e;
+                    }
+                }
+            }
+        }
+        Some(sp * mul)
+    };
+    if let Some(sp) = second {
+        secondpos = sp;
+    }
+
+    let at = |segpos: f64| {
+        let local = add_scl(&pos, &halfaxis, segpos);
+        add3(&mul_mat_vec3(&g2.mat, &local), &g2.pos)
+    };
+    let mut n = sphere_box_at(&mut con[0], margin, &at(bestsegmentpos), size1[0], g2);
+    if secondpos > -3.0 {
+        n += sphere_box_at(
+            &mut con[n],
+            margin,
+            &at(secondpos + bestsegmentpos),
+            size1[0],
+            g2,
+        );
+    }
+    n
+}
+
+/// Second segment position when a box corner is closest (None: capsule points at the corner).
+fn corner_second(rel: usize, axis: &Vec3, halfaxis: &Vec3, size2: &Vec3, best: f64) -> Option<f64> {
+    let (mul, c1, de, dp) = match rel {
+        1 | 2 | 4 => (1.0, rel, 1.0 - best, 1.0 + best),
+        3 | 5 | 6 => (-1.0, 7 - rel, 1.0 + best, 1.0 - best),
+        _ => return None,
+    };
+    let (ax, ax1, ax2) = match c1 {
+        1 => (0, 1, 2),
+        2 => (1, 2, 0),
+        _ => (2, 0, 1),
+    };
+    let mut sp;
+    if axis[ax] * axis[ax] > 0.5 {
+        // along the box edge
+        sp = de;
+        let e = 2.0 * size2[ax] / halfaxis[ax].abs();
+        if e < sp {
+            sp = e;
+        }
+        sp *= mul;
+    } else {
+        // along a box face
+        sp = dp;
+        for a in [ax1, ax2] {
+            let e = 2.0 * size2[a] / halfaxis[a].abs();
+            if e < sp {
+                sp = e;
+            }
+        }
+        sp *= -mul;
+    }
+    Some(sp)
+}
+
+/// Second segment position when the middle of a box edge is closest (None: T configuration).
+#[allow(clippy::too_many_arguments)]
+fn edge_second(
+    axisdir: usize,
+    clcorner: usize,
+    cledge: usize,
+    axis: &Vec3,
+    halfaxis: &Vec3,
+    size2: &Vec3,
+    best: f64,
+    bestboxpos: f64,
+) -> Option<f64> {
+    let c1 = (axisdir ^ clcorner) & (7 - (1 << cledge));
+    if c1 != 1 && c1 != 2 && c1 != 4 {
+        return None;
+    }
+    let ax = cledge;
+    let (mut ax1, ax2) = match cledge {
+        0 => (1, 2),
+        1 => (2, 0),
+        _ => (0, 1),
+    };
+    // the face the capsule is closer to being parallel with
+    if axis[ax1].abs() > axis[ax2].abs() {
+        ax1 = ax2;
+    }
+    let ax2 = 3 - ax - ax1;
+
+    let (mul, mut sp) = if c1 & (1 << ax2) != 0 {
+        (1.0, 1.0 - best)
+    } else {
+        (-1.0, 1.0 + best)
+    };
+    let e = 2.0 * size2[ax2] / halfaxis[ax2].abs();
+    if e < sp {
+        sp = e;
+    }
+    let e2 = if ((axisdir & (1 << ax)) != 0) == ((c1 & (1 << ax2)) != 0) {
+        1.0 - bestboxpos
+    } else {
+        1.0 + bestboxpos
+    };
+    let e = size2[ax] * e2 / halfaxis[ax].abs();
+    if e < sp {
+        sp = e;
+    }
+    Some(sp * mul)
 }
