@@ -8,6 +8,7 @@ pub mod ccd;
 pub mod chol;
 pub mod chol_sparse;
 pub mod collide;
+pub mod collide_box;
 pub mod eig3;
 pub mod misc;
 pub mod qcqp;

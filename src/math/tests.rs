@@ -817,3 +817,52 @@ fn primitive_collisions() {
     assert!((con[0].dist + 0.03).abs() < 1e-15);
     assert_eq!(sphere_sphere(&s, &ball, 0.0, &mut con), 0);
 }
+
+#[test]
+fn box_collisions() {
+    use super::collide::*;
+    use super::collide_box::*;
+    let eye = [1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0];
+    let mut con = [ContactGeom::default(); MAX_BOX_CONTACTS];
+
+    // stacked cubes overlapping by 1 cm: four corner contacts; 2.2.2 reports half the depth
+    let b1 = GeomPose {
+        pos: [0.0; 3],
+        mat: eye,
+        size: [0.5; 3],
+    };
+    let b2 = GeomPose {
+        pos: [0.1, 0.05, 0.69],
+        mat: eye,
+        size: [0.2; 3],
+    };
+    let n = box_box(&b1, &b2, 0.0, &mut con);
+    assert!(n >= 4, "{n}");
+    for c in &con[..n] {
+        assert!((c.dist + 0.0).abs() <= 0.0101 && c.dist < 0.0, "{c:?}");
+        assert!((c.normal()[2].abs() - 1.0).abs() < 1e-12);
+    }
+    let far = GeomPose {
+        pos: [0.0, 0.0, 2.0],
+        ..b2
+    };
+    assert_eq!(box_box(&b1, &far, 0.0, &mut con), 0);
+
+    // sphere resting on a box face, capsule lying on it
+    let s = GeomPose {
+        pos: [0.0, 0.0, 0.59],
+        mat: eye,
+        size: [0.1, 0.0, 0.0],
+    };
+    assert_eq!(sphere_box(&s, &b1, 0.0, &mut con), 1);
+    assert!((con[0].dist + 0.01).abs() < 1e-12, "{:?}", con[0]);
+    assert!(close(&con[0].normal(), &[0.0, 0.0, -1.0], 1e-15));
+    let lying = [1.0, 0.0, 0.0, 0.0, 0.0, -1.0, 0.0, 1.0, 0.0];
+    let cap = GeomPose {
+        pos: [0.0, 0.0, 0.59],
+        mat: lying,
+        size: [0.1, 0.2, 0.0],
+    };
+    assert_eq!(capsule_box(&cap, &b1, 0.0, &mut con), 2);
+    assert!(con[..2].iter().all(|c| (c.dist + 0.01).abs() < 1e-12));
+}
