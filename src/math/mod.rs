@@ -9,6 +9,7 @@ pub mod chol;
 pub mod chol_sparse;
 pub mod collide;
 pub mod collide_box;
+pub mod convex;
 pub mod eig3;
 pub mod misc;
 pub mod qcqp;

@@ -866,3 +866,65 @@ fn box_collisions() {
     assert_eq!(capsule_box(&cap, &b1, 0.0, &mut con), 2);
     assert!(con[..2].iter().all(|c| (c.dist + 0.01).abs() < 1e-12));
 }
+
+#[test]
+fn convex_collisions() {
+    use super::collide::*;
+    use super::convex::*;
+    let eye = [1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0];
+    let opt = MprOptions {
+        iterations: 50,
+        tolerance: 1e-6,
+    };
+    let mut con = [ContactGeom::default(); 5];
+    let ball = ConvexGeom {
+        shape: Shape::Sphere,
+        pose: GeomPose {
+            pos: [0.0, 0.0, 0.29],
+            mat: eye,
+            size: [0.1, 0.0, 0.0],
+        },
+        rbound: 0.1,
+    };
+    let block = ConvexGeom {
+        shape: Shape::Box,
+        pose: GeomPose {
+            pos: [0.0; 3],
+            mat: eye,
+            size: [0.2; 3],
+        },
+        rbound: 0.35,
+    };
+    assert_eq!(convex(&ball, &block, 0.0, &opt, true, &mut con), 1);
+    assert!((con[0].dist + 0.01).abs() < 1e-5, "{:?}", con[0]);
+    assert!(close(&con[0].normal(), &[0.0, 0.0, -1.0], 1e-6));
+
+    // mesh tetrahedron above a plane, one vertex below it
+    let vert: [f32; 12] = [0.0, 0.0, -0.05, 0.3, 0.0, 0.1, 0.0, 0.3, 0.1, 0.1, 0.1, 0.3];
+    let tet = ConvexGeom {
+        shape: Shape::Mesh(MeshData {
+            vert: &vert,
+            graph: None,
+        }),
+        pose: GeomPose {
+            pos: [0.0; 3],
+            mat: eye,
+            size: [0.0; 3],
+        },
+        rbound: 0.4,
+    };
+    let plane = GeomPose {
+        pos: [0.0; 3],
+        mat: eye,
+        size: [0.0; 3],
+    };
+    let mut pc = [ContactGeom::default(); 3];
+    assert_eq!(plane_convex(&plane, &tet, 0.0, &mut pc), 1);
+    assert_eq!(pc[0].dist, -0.05000000074505806);
+    let mut idx = -1;
+    assert_eq!(
+        support(&tet, &[1.0, 0.0, 0.0], 0.0, &mut idx),
+        [0.30000001192092896, 0.0, 0.10000000149011612]
+    );
+    assert_eq!(idx, 1);
+}
