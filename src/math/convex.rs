@@ -253,26 +253,30 @@ fn ellipsoid_normal_outside(nrm: &mut Vec3, pos: &Vec3, size: &Vec3) -> bool {
 
 /// Replaces the MPR normal by the analytic surface normal of sphere, capsule, ellipsoid and
 /// cylinder geoms where it is well defined (mjc_fixNormal).
-#[allow(clippy::collapsible_match)]
 pub fn fix_normal(con: &mut ContactGeom, g1: &ConvexGeom, g2: &ConvexGeom) {
+    fix_normal_of(con, [Some(g1), Some(g2)]);
+}
+
+/// `fix_normal` where a side may be a geom without support function (heightfield).
+#[allow(clippy::collapsible_match)]
+fn fix_normal_of(con: &mut ContactGeom, geoms: [Option<&ConvexGeom>; 2]) {
     let smooth = |g: &ConvexGeom| {
         matches!(
             g.shape,
             Shape::Sphere | Shape::Capsule | Shape::Ellipsoid | Shape::Cylinder
         )
     };
-    let geoms = [g1, g2];
-    if !smooth(g1) && !smooth(g2) {
+    let geoms = geoms.map(|g| g.filter(|g| smooth(g)));
+    if geoms[0].is_none() && geoms[1].is_none() {
         return;
     }
     let f = con.frame;
     let mut normal = [[f[0], f[1], f[2]], [-f[0], -f[1], -f[2]]];
     let mut processed = [false; 2];
     for i in 0..2 {
-        let g = geoms[i];
-        if !smooth(g) {
+        let Some(g) = geoms[i] else {
             continue;
-        }
+        };
         let (mat, size) = (&g.pose.mat, &g.pose.size);
         let pos = mul_mat_t_vec3(mat, &sub3(&con.pos, &g.pose.pos));
         let mut nrm = mul_mat_t_vec3(mat, &normal[i]);
@@ -462,4 +466,159 @@ pub fn plane_convex(
 #[inline]
 fn add_scl(a: &Vec3, b: &Vec3, s: f64) -> Vec3 {
     [a[0] + b[0] * s, a[1] + b[1] * s, a[2] + b[2] * s]
+}
+
+/// A heightfield: sizes (x, y, top, bottom), grid and elevation data in [0, 1].
+#[derive(Clone, Copy, Debug)]
+pub struct HField<'a> {
+    pub size: [f64; 4],
+    pub nrow: usize,
+    pub ncol: usize,
+    pub data: &'a [f32],
+}
+
+/// Most contacts of one geom pair (mjMAXCONPAIR).
+pub const MAX_CONTACT_PAIR: usize = 50;
+
+/// Heightfield (pose `hpose`) against a convex geom: MPR against the triangular prisms of the
+/// grid cells under the geom (mjc_ConvexHField). `con` must hold MAX_CONTACT_PAIR.
+pub fn convex_hfield(
+    hf: &HField,
+    hpose: &GeomPose,
+    g2: &ConvexGeom,
+    margin: f64,
+    opt: &MprOptions,
+    con: &mut [ContactGeom],
+) -> usize {
+    use super::blas::mul_mat_t_vec;
+    use super::misc::to_int;
+    use super::vec3::mul_mat3t_mat;
+    let size1 = &hf.size;
+    let (pos1, mat1) = (&hpose.pos, &hpose.mat);
+
+    // geom position in the heightfield frame, bounding-sphere test
+    let mut pos = [0.0; 3];
+    mul_mat_t_vec(&mut pos, mat1, &sub3(&g2.pose.pos, pos1), 3, 3);
+    let r2 = g2.rbound;
+    for i in 0..2 {
+        if (size1[i] < pos[i] - r2 - margin) || (-size1[i] > pos[i] + r2 + margin) {
+            return 0;
+        }
+    }
+    if size1[2] < pos[2] - r2 - margin || -size1[3] > pos[2] + r2 + margin {
+        return 0;
+    }
+
+    // the geom in the heightfield frame, and its bounding box
+    let mut local = *g2;
+    local.pose.mat = mul_mat3t_mat(mat1, &g2.pose.mat);
+    local.pose.pos = pos;
+    let mut idx = -1;
+    let mut extent = |d: Vec3, k: usize| support(&local, &d, 0.0, &mut idx)[k];
+    let xmax = extent([1.0, 0.0, 0.0], 0);
+    let xmin = extent([-1.0, 0.0, 0.0], 0);
+    let ymax = extent([0.0, 1.0, 0.0], 1);
+    let ymin = extent([0.0, -1.0, 0.0], 1);
+    let zmax = extent([0.0, 0.0, 1.0], 2);
+    let zmin = extent([0.0, 0.0, -1.0], 2);
+    if (xmin - margin > size1[0])
+        || (xmax + margin < -size1[0])
+        || (ymin - margin > size1[1])
+        || (ymax + margin < -size1[1])
+        || (zmin - margin > size1[2])
+        || (zmax + margin < -size1[3])
+    {
+        return 0;
+    }
+
+    // sub-grid under the geom
+    let (nrow, ncol) = (hf.nrow as i32, hf.ncol as i32);
+    let cmin = to_int(((xmin + size1[0]) / (2.0 * size1[0]) * (ncol - 1) as f64).floor()).max(0);
+    let cmax =
+        to_int(((xmax + size1[0]) / (2.0 * size1[0]) * (ncol - 1) as f64).ceil()).min(ncol - 1);
+    let rmin = to_int(((ymin + size1[1]) / (2.0 * size1[1]) * (nrow - 1) as f64).floor()).max(0);
+    let rmax =
+        to_int(((ymax + size1[1]) / (2.0 * size1[1]) * (nrow - 1) as f64).ceil()).min(nrow - 1);
+
+    let dx = (2.0 * size1[0]) / (ncol - 1) as f64;
+    let dy = (2.0 * size1[1]) / (nrow - 1) as f64;
+    let dr = [1, 0];
+    let mut prism = [[0.0f64; 3]; 6];
+    for v in &mut prism[..3] {
+        v[2] = -size1[3];
+    }
+
+    let mut cnt = 0;
+    'grid: for r in rmin..rmax {
+        let mut nvert = 0;
+        for c in cmin..=cmax {
+            for d in dr {
+                let row = r + d;
+                let z = hf.data[(row * ncol + c) as usize] as f64 * size1[2] + margin;
+                let (x, y) = (dx * c as f64 - size1[0], dy * row as f64 - size1[1]);
+                prism[0] = prism[1];
+                prism[1] = prism[2];
+                prism[3] = prism[4];
+                prism[4] = prism[5];
+                prism[2][0] = x;
+                prism[5][0] = x;
+                prism[2][1] = y;
+                prism[5][1] = y;
+                prism[5][2] = z;
+                nvert += 1;
+                if nvert <= 2 {
+                    continue;
+                }
+                if prism[3][2] < zmin && prism[4][2] < zmin && prism[5][2] < zmin {
+                    continue;
+                }
+
+                let mut center = [0.0; 3];
+                for v in &prism {
+                    center = add3(&center, v);
+                }
+                let center = scl3(&center, 1.0 / 6.0);
+                let p = prism;
+                let mut i2 = -1;
+                let mut pair = ConvexPair {
+                    center1: center,
+                    center2: local.pose.pos,
+                    support1: |dir: &Vec3| {
+                        let start = if dir[2] < 0.0 { 0 } else { 3 };
+                        let mut ibest = start;
+                        let mut best = dot3(&p[start], dir);
+                        for (i, v) in p.iter().enumerate().take(start + 3).skip(start + 1) {
+                            let t = dot3(v, dir);
+                            if t > best {
+                                ibest = i;
+                                best = t;
+                            }
+                        }
+                        p[ibest]
+                    },
+                    support2: |dir: &Vec3| support(&local, dir, margin, &mut i2),
+                    max_iterations: opt.iterations,
+                    tolerance: opt.tolerance,
+                };
+                if let Some((depth, dir, vpos)) = pair.mpr_penetration() {
+                    if !vec3_eq(&dir, &[0.0; 3]) {
+                        let n = mul_mat_vec3(mat1, &dir);
+                        let c = &mut con[cnt];
+                        c.dist = -depth;
+                        c.frame = [n[0], n[1], n[2], 0.0, 0.0, 0.0];
+                        c.pos = add3(&mul_mat_vec3(mat1, &vpos), pos1);
+                        cnt += 1;
+                        if cnt >= MAX_CONTACT_PAIR {
+                            break 'grid;
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    for c in &mut con[..cnt] {
+        fix_normal_of(c, [None, Some(g2)]);
+    }
+    cnt
 }

@@ -928,3 +928,52 @@ fn convex_collisions() {
     );
     assert_eq!(idx, 1);
 }
+
+#[test]
+fn heightfield_collision() {
+    use super::collide::*;
+    use super::convex::*;
+    let eye = [1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0];
+    let data = [0.5f32; 16];
+    let hf = HField {
+        size: [1.0, 1.0, 0.2, 0.1],
+        nrow: 4,
+        ncol: 4,
+        data: &data,
+    };
+    let ground = GeomPose {
+        pos: [0.0; 3],
+        mat: eye,
+        size: [0.0; 3],
+    };
+    let ball = ConvexGeom {
+        shape: Shape::Sphere,
+        pose: GeomPose {
+            pos: [0.1, 0.2, 0.19],
+            mat: eye,
+            size: [0.1, 0.0, 0.0],
+        },
+        rbound: 0.1,
+    };
+    let opt = MprOptions {
+        iterations: 50,
+        tolerance: 1e-6,
+    };
+    let mut con = [ContactGeom::default(); MAX_CONTACT_PAIR];
+    let n = convex_hfield(&hf, &ground, &ball, 0.0, &opt, &mut con);
+    assert!(n >= 1);
+    // flat surface at z = 0.1: the sphere sinks 1 cm
+    assert!(
+        con[..n].iter().all(|c| (c.dist + 0.01).abs() < 1e-5),
+        "{:?}",
+        &con[..n]
+    );
+    let high = ConvexGeom {
+        pose: GeomPose {
+            pos: [0.1, 0.2, 0.5],
+            ..ball.pose
+        },
+        ..ball
+    };
+    assert_eq!(convex_hfield(&hf, &ground, &high, 0.0, &opt, &mut con), 0);
+}
