@@ -1,0 +1,231 @@
+// Differential harness: one source, compiled against Debian's MuJoCo 2.2.2 (harness-ref) and
+// against rujoco (harness-ours).
+//
+//   harness-ref  record  MODEL DIR   reference run: model, trajectory, states, all checks -> DIR/ref
+//   harness-ours replay  MODEL DIR   our run: the same checks at the reference's states -> DIR/ours
+//   harness-ref  compare DIR [-v]    worst relative error per quantity, exit 1 on any failure
+//
+// Each check group runs in its own child process, so that an unimplemented function (mju_error)
+// or a crash fails that group only, with the reason in DIR/<side>/<group>.status.
+// State checks of our library run on the reference's compiled model copied into plain memory
+// ("transplant"), so that physics is tested independently of our XML compiler; the trajectory
+// check uses our own mj_loadXML (falling back to the transplant only if it fails, noted).
+
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <functional>
+#include <string>
+
+#include <mujoco/mujoco.h>
+
+#include "binfile.h"
+#include "compare.h"
+#include "dump.h"
+#include "scenario.h"
+
+namespace {
+
+std::string g_status;  // status file of the running check group
+
+void write_status(const std::string& path, const std::string& text) {
+  FILE* fp = std::fopen(path.c_str(), "w");
+  if (fp) {
+    std::fprintf(fp, "%s\n", text.c_str());
+    std::fclose(fp);
+  }
+}
+
+void on_error(const char* msg) {
+  write_status(g_status, std::string("mju_error: ") + msg);
+  _exit(3);
+}
+
+void on_warning(const char* msg) { std::fprintf(stderr, "mju_warning: %s\n", msg); }
+
+// Runs fn ("" = success, else a failure message) in a child process with a time limit.
+bool isolated(const std::string& status, const std::function<std::string()>& fn, int seconds) {
+  std::remove(status.c_str());
+  std::fflush(stdout);
+  std::fflush(stderr);
+  pid_t pid = fork();
+  if (pid == 0) {
+    g_status = status;
+    mju_user_error = on_error;
+    mju_user_warning = on_warning;
+    std::string r = fn();
+    write_status(status, r.empty() ? "ok" : r);
+    std::fflush(stdout);
+    _exit(0);
+  }
+  int ws = 0;
+  for (int t = 0; t < seconds * 100; t++) {
+    if (waitpid(pid, &ws, WNOHANG) == pid) {
+      if (WIFSIGNALED(ws)) {
+        write_status(status, std::string("crashed: signal ") + std::to_string(WTERMSIG(ws)) + " (" +
+                                 strsignal(WTERMSIG(ws)) + ")");
+      } else if (WEXITSTATUS(ws) != 0 && read_status(status).rfind("mju_error", 0) != 0) {
+        write_status(status, "exited with code " + std::to_string(WEXITSTATUS(ws)));
+      }
+      return read_status(status) == "ok";
+    }
+    usleep(10000);
+  }
+  kill(pid, SIGKILL);
+  waitpid(pid, &ws, 0);
+  write_status(status, "timed out after " + std::to_string(seconds) + " s");
+  return false;
+}
+
+mjModel* load(const char* path, std::string& error) {
+  char err[1000] = "";
+  mjModel* m = mj_loadXML(path, nullptr, err, sizeof err);
+  if (!m) error = std::string("mj_loadXML failed: ") + err;
+  return m;
+}
+
+std::string saved(const Writer& w, const std::string& path) {
+  return w.save(path) ? "" : "cannot write " + path;
+}
+
+const int kSeconds = 120;
+
+int record(const char* model, const std::string& dir) {
+  std::string out = dir + "/ref/";
+  bool ok = isolated(out + "model.status", [&]() -> std::string {
+    std::string e;
+    mjModel* m = load(model, e);
+    if (!m) return e;
+    Writer w;
+    dump_model(m, w);
+    return saved(w, out + "model.bin");
+  }, kSeconds);
+  ok = isolated(out + "traj.status", [&]() -> std::string {
+    std::string e;
+    mjModel* m = load(model, e);
+    if (!m) return e;
+    mjData* d = mj_makeData(m);
+    Writer traj, states;
+    run_trajectory(m, d, traj, &states);
+    std::string r = saved(states, dir + "/states.bin");
+    return r.empty() ? saved(traj, out + "traj.bin") : r;
+  }, kSeconds) && ok;
+  for (const auto& [group, check] : state_checks()) {
+    ok = isolated(out + group + ".status", [&, group = group, check = check]() -> std::string {
+      std::string e;
+      mjModel* m = load(model, e);
+      if (!m) return e;
+      mjData* d = mj_makeData(m);
+      Reader states, post;
+      if (!states.load(dir + "/states.bin")) return "no states.bin";
+      post.load(out + "forward.bin");
+      const Rec* n = states.get("nstate");
+      Inputs in{&states, &post, n ? n->i()[0] : 0};
+      Writer w;
+      check(m, d, in, w);
+      return saved(w, out + group + ".bin");
+    }, kSeconds) && ok;
+  }
+  return ok ? 0 : 1;
+}
+
+int replay(const char* model, const std::string& dir) {
+  std::string out = dir + "/ours/";
+  std::string ref = dir + "/ref/";
+  std::remove((out + "traj.note").c_str());
+  isolated(out + "model.status", [&]() -> std::string {
+    std::string e;
+    mjModel* m = load(model, e);
+    if (!m) return e;
+    Writer w;
+    dump_model(m, w);
+    return saved(w, out + "model.bin");
+  }, kSeconds);
+  Reader refmodel;
+  bool have_ref = refmodel.load(ref + "model.bin");
+  // our loader's result decides the trajectory's model (a failing mj_loadXML cannot return)
+  bool loads = read_status(out + "model.status") == "ok";
+  isolated(out + "traj.status", [&]() -> std::string {
+    std::string e;
+    mjModel* m = nullptr;
+    if (loads) {
+      m = load(model, e);
+      if (!m) return e;
+    } else {
+      if (!have_ref) return "no reference model.bin";
+      std::string why = read_status(out + "model.status");
+      write_status(out + "traj.note", "on the transplanted reference model, as loading failed (" + why + ")");
+      m = transplant_model(refmodel);
+    }
+    mjData* d = mj_makeData(m);
+    if (!d) return "mj_makeData returned NULL";
+    Writer traj;
+    run_trajectory(m, d, traj, nullptr);
+    return saved(traj, out + "traj.bin");
+  }, kSeconds);
+  for (const auto& [group, check] : state_checks()) {
+    isolated(out + group + ".status", [&, group = group, check = check]() -> std::string {
+      if (!have_ref) return "no reference model.bin";
+      mjModel* m = transplant_model(refmodel);
+      mjData* d = mj_makeData(m);
+      if (!d) return "mj_makeData returned NULL";
+      Reader states, post;
+      if (!states.load(dir + "/states.bin")) return "no states.bin";
+      post.load(ref + "forward.bin");
+      const Rec* n = states.get("nstate");
+      Inputs in{&states, &post, n ? n->i()[0] : 0};
+      Writer w;
+      check(m, d, in, w);
+      return saved(w, out + group + ".bin");
+    }, kSeconds);
+  }
+  return 0;
+}
+
+int compare(const std::string& dir, bool verbose) {
+  std::vector<std::string> groups = {"model", "traj"};
+  for (const auto& gc : state_checks()) groups.push_back(gc.first);
+  int npass = 0;
+  double worst = 0;
+  for (const std::string& g : groups) {
+    double gw;
+    bool ok = compare_group(dir, g, tolerance(g), verbose, &gw);
+    if (g == "traj") {
+      std::string note = read_status(dir + "/ours/traj.note");
+      if (note.rfind("no result", 0) != 0) std::printf("  %-16s note  %s\n", "traj", note.c_str());
+    }
+    npass += ok;
+    if (!(gw <= worst)) worst = gw;
+  }
+  std::printf("  %d of %zu check groups pass; worst relative error %.2e\n", npass, groups.size(),
+              worst);
+  return npass == (int)groups.size() ? 0 : 1;
+}
+
+int usage() {
+  std::fprintf(stderr,
+               "usage: harness record MODEL DIR | harness replay MODEL DIR | "
+               "harness compare DIR [-v]\n");
+  return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 3) return usage();
+  std::string mode = argv[1];
+  if (mode == "compare") return compare(argv[2], argc > 3 && !std::strcmp(argv[3], "-v"));
+  if (argc < 4) return usage();
+  std::string dir = argv[3];
+  mkdir(dir.c_str(), 0755);
+  mkdir((dir + "/ref").c_str(), 0755);
+  mkdir((dir + "/ours").c_str(), 0755);
+  if (mode == "record") return record(argv[2], dir);
+  if (mode == "replay") return replay(argv[2], dir);
+  return usage();
+}
