@@ -3,7 +3,8 @@
 //
 //   harness-ref  record  MODEL DIR   reference run: model, trajectory, states, all checks -> DIR/ref
 //   harness-ours replay  MODEL DIR   our run: the same checks at the reference's states -> DIR/ours
-//   harness-ref  compare DIR [-v]    worst relative error per quantity, exit 1 on any failure
+//   harness-ref  compare DIR [-v] [--groups a,b]   worst relative error per quantity, exit 1 on
+//                                    any failure (all groups, or the listed ones)
 //
 // Each check group runs in its own child process, so that an unimplemented function (mju_error)
 // or a crash fails that group only, with the reason in DIR/<side>/<group>.status.
@@ -11,6 +12,7 @@
 // ("transplant"), so that physics is tested independently of our XML compiler; the trajectory
 // check uses our own mj_loadXML (falling back to the transplant only if it fails, noted).
 
+#include <dlfcn.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -172,8 +174,8 @@ int replay(const char* model, const std::string& dir) {
     isolated(out + group + ".status", [&, group = group, check = check]() -> std::string {
       if (!have_ref) return "no reference model.bin";
       mjModel* m = transplant_model(refmodel);
-      mjData* d = mj_makeData(m);
-      if (!d) return "mj_makeData returned NULL";
+      mjData* d = needs_data(group) ? mj_makeData(m) : nullptr;
+      if (needs_data(group) && !d) return "mj_makeData returned NULL";
       Reader states, post;
       if (!states.load(dir + "/states.bin")) return "no states.bin";
       post.load(ref + "forward.bin");
@@ -187,9 +189,13 @@ int replay(const char* model, const std::string& dir) {
   return 0;
 }
 
-int compare(const std::string& dir, bool verbose) {
-  std::vector<std::string> groups = {"model", "traj"};
-  for (const auto& gc : state_checks()) groups.push_back(gc.first);
+int compare(const std::string& dir, bool verbose, const std::string& only) {
+  std::vector<std::string> groups;
+  std::vector<std::string> all = {"model", "traj"};
+  for (const auto& gc : state_checks()) all.push_back(gc.first);
+  for (const std::string& g : all) {
+    if (only.empty() || ("," + only + ",").find("," + g + ",") != std::string::npos) groups.push_back(g);
+  }
   int npass = 0;
   double worst = 0;
   for (const std::string& g : groups) {
@@ -207,10 +213,30 @@ int compare(const std::string& dir, bool verbose) {
   return npass == (int)groups.size() ? 0 : 1;
 }
 
+// The library this binary runs against must be the one it was built for (LD_LIBRARY_PATH
+// could swap them: both carry the SONAME libmujoco.so.2.2.2).
+bool right_library() {
+  Dl_info info;
+  if (!dladdr((void*)&mj_step, &info) || !info.dli_fname) return true;
+  char real[4096];
+  std::string path = realpath(info.dli_fname, real) ? real : info.dli_fname;
+  bool is_ref = path.rfind("/usr/lib/", 0) == 0;
+#ifdef RJ_OURS
+  bool want_ref = false;
+#else
+  bool want_ref = true;
+#endif
+  if (is_ref != want_ref) {
+    std::fprintf(stderr, "harness built for %s loaded %s: check LD_LIBRARY_PATH\n",
+                 want_ref ? "Debian's libmujoco" : "rujoco", path.c_str());
+  }
+  return is_ref == want_ref;
+}
+
 int usage() {
   std::fprintf(stderr,
                "usage: harness record MODEL DIR | harness replay MODEL DIR | "
-               "harness compare DIR [-v]\n");
+               "harness compare DIR [-v] [--groups g1,g2,...]\n");
   return 2;
 }
 
@@ -218,8 +244,18 @@ int usage() {
 
 int main(int argc, char** argv) {
   if (argc < 3) return usage();
+  if (!right_library()) return 4;
   std::string mode = argv[1];
-  if (mode == "compare") return compare(argv[2], argc > 3 && !std::strcmp(argv[3], "-v"));
+  if (mode == "compare") {
+    bool verbose = false;
+    std::string only;
+    for (int i = 3; i < argc; i++) {
+      if (!std::strcmp(argv[i], "-v")) verbose = true;
+      else if (!std::strcmp(argv[i], "--groups") && i + 1 < argc) only = argv[++i];
+      else return usage();
+    }
+    return compare(argv[2], verbose, only);
+  }
   if (argc < 4) return usage();
   std::string dir = argv[3];
   mkdir(dir.c_str(), 0755);
