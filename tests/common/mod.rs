@@ -102,7 +102,8 @@ pub fn compile_c(srcs: &[PathBuf], name: &str, lib: Lib) -> PathBuf {
 /// LD_LIBRARY_PATH cargo sets for tests (it would point libmujoco.so.2.2.2 at ours).
 pub fn run(prog: &Path, args: &[&str], envs: &[(&str, &str)], seconds: u32) -> Output {
     let mut cmd = Command::new("timeout");
-    cmd.arg(seconds.to_string()).arg(prog).args(args).current_dir(root());
+    // a scratch working directory: mju_error writes MUJOCO_LOG.TXT there
+    cmd.arg(seconds.to_string()).arg(prog).args(args).current_dir(work_dir("run"));
     cmd.stdin(Stdio::null()).env_remove("LD_LIBRARY_PATH");
     for (k, v) in envs {
         cmd.env(k, v);
@@ -120,8 +121,17 @@ pub fn report(name: &str, body: &str) {
     std::fs::write(dir.join(format!("{name}.txt")), body).unwrap();
 }
 
-/// The models of the differential checks (capi-tests/models.list).
+/// The models of the differential checks (capi-tests/models.list), as absolute paths.
 pub fn models() -> Vec<String> {
     let list = std::fs::read_to_string(root().join("capi-tests/models.list")).unwrap();
-    list.lines().map(str::trim).filter(|l| !l.is_empty() && !l.starts_with('#')).map(String::from).collect()
+    list.lines()
+        .map(str::trim)
+        .filter(|l| !l.is_empty() && !l.starts_with('#'))
+        .map(|l| root().join(l).to_string_lossy().into_owned())
+        .collect()
+}
+
+/// A model of models/ as an absolute path.
+pub fn model(name: &str) -> String {
+    root().join("models").join(name).to_string_lossy().into_owned()
 }
