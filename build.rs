@@ -32,15 +32,46 @@ fn main() {
     let inc = root.join("include/mujoco");
     std::fs::create_dir_all(&inc).unwrap();
 
-    header(&root, &inc, "mjtnum.h", &["src/abi/mjtnum.rs"], &[], "MUJOCO_MJTNUM_H_", "");
-    header(&root, &inc, "mjmodel.h", &["src/abi/mjmodel.rs"], &["mujoco/mjtnum.h"], "MUJOCO_MJMODEL_H_", "");
-    header(&root, &inc, "mjdata.h", &["src/abi/mjdata.rs"], &["mujoco/mjmodel.h"], "MUJOCO_MJDATA_H_", "");
+    header(
+        &root,
+        &inc,
+        "mjtnum.h",
+        &["src/abi/mjtnum.rs"],
+        &[],
+        "MUJOCO_MJTNUM_H_",
+        "",
+    );
+    header(
+        &root,
+        &inc,
+        "mjmodel.h",
+        &["src/abi/mjmodel.rs"],
+        &["mujoco/mjtnum.h"],
+        "MUJOCO_MJMODEL_H_",
+        "",
+    );
+    header(
+        &root,
+        &inc,
+        "mjdata.h",
+        &["src/abi/mjdata.rs"],
+        &["mujoco/mjmodel.h"],
+        "MUJOCO_MJDATA_H_",
+        "",
+    );
     header(
         &root,
         &inc,
         "mujoco.h",
         &["src/capi/mod.rs"],
-        &["mujoco/mjexport.h", "mujoco/mjtnum.h", "mujoco/mjmodel.h", "mujoco/mjdata.h", "stdlib.h", "math.h"],
+        &[
+            "mujoco/mjexport.h",
+            "mujoco/mjtnum.h",
+            "mujoco/mjmodel.h",
+            "mujoco/mjdata.h",
+            "stdlib.h",
+            "math.h",
+        ],
         "MUJOCO_MUJOCO_H_",
         MUJOCO_H_TRAILER,
     );
@@ -97,12 +128,24 @@ extern const char* mjRNDSTRING[10][3];
 #endif
 "#;
 
-fn header(root: &Path, inc: &Path, name: &str, srcs: &[&str], includes: &[&str], guard: &str, trailer: &str) {
+fn header(
+    root: &Path,
+    inc: &Path,
+    name: &str,
+    srcs: &[&str],
+    includes: &[&str],
+    guard: &str,
+    trailer: &str,
+) {
     let mut config = cbindgen::Config {
         language: cbindgen::Language::C,
         include_guard: Some(guard.to_string()),
         header: Some(format!("// {NOTICE}")),
-        trailer: if trailer.is_empty() { None } else { Some(trailer.to_string()) },
+        trailer: if trailer.is_empty() {
+            None
+        } else {
+            Some(trailer.to_string())
+        },
         no_includes: true,
         cpp_compat: true,
         style: cbindgen::Style::Tag,
@@ -110,8 +153,16 @@ fn header(root: &Path, inc: &Path, name: &str, srcs: &[&str], includes: &[&str],
         documentation: false,
         ..Default::default()
     };
-    config.sys_includes = includes.iter().filter(|s| !s.starts_with("mujoco/")).map(|s| s.to_string()).collect();
-    config.includes = includes.iter().filter(|s| s.starts_with("mujoco/")).map(|s| s.to_string()).collect();
+    config.sys_includes = includes
+        .iter()
+        .filter(|s| !s.starts_with("mujoco/"))
+        .map(|s| s.to_string())
+        .collect();
+    config.includes = includes
+        .iter()
+        .filter(|s| s.starts_with("mujoco/"))
+        .map(|s| s.to_string())
+        .collect();
     config.export.exclude = [
         "mjDISABLESTRING",
         "mjENABLESTRING",
@@ -129,6 +180,7 @@ fn header(root: &Path, inc: &Path, name: &str, srcs: &[&str], includes: &[&str],
         "_mjPRIVATE__set_tls_warning_fn",
         "_mjPRIVATE__get_xml_precision",
         "_mjPRIVATE__set_xml_precision",
+        "mj_validateReferences",
     ]
     .iter()
     .map(|s| s.to_string())
@@ -139,7 +191,10 @@ fn header(root: &Path, inc: &Path, name: &str, srcs: &[&str], includes: &[&str],
     let internal = std::fs::read_to_string(root.join("src/capi/pending_internal.rs")).unwrap();
     for line in internal.lines() {
         if let Some(rest) = line.strip_prefix("pub unsafe extern \"C\" fn ") {
-            config.export.exclude.push(rest.split('(').next().unwrap().to_string());
+            config
+                .export
+                .exclude
+                .push(rest.split('(').next().unwrap().to_string());
         }
     }
     // every type a header's source declares, reachable from a function or not
@@ -147,7 +202,9 @@ fn header(root: &Path, inc: &Path, name: &str, srcs: &[&str], includes: &[&str],
         let text = std::fs::read_to_string(root.join(src)).unwrap();
         for line in text.lines() {
             let mut w = line.split_whitespace();
-            if let (Some("pub"), Some("struct" | "enum" | "type"), Some(n)) = (w.next(), w.next(), w.next()) {
+            if let (Some("pub"), Some("struct" | "enum" | "type"), Some(n)) =
+                (w.next(), w.next(), w.next())
+            {
                 let n = n.trim_end_matches(|c: char| !c.is_alphanumeric() && c != '_');
                 if !config.export.exclude.iter().any(|e| e == n) {
                     config.export.include.push(n.to_string());
@@ -159,10 +216,15 @@ fn header(root: &Path, inc: &Path, name: &str, srcs: &[&str], includes: &[&str],
     for s in srcs {
         b = b.with_src(root.join(s));
     }
-    let bindings = b.generate().unwrap_or_else(|e| panic!("cbindgen failed for {name}: {e}"));
+    let bindings = b
+        .generate()
+        .unwrap_or_else(|e| panic!("cbindgen failed for {name}: {e}"));
     let mut buf = Vec::new();
     bindings.write(&mut buf);
-    let text = String::from_utf8(buf).unwrap().replace("#include \"mujoco/", "#include <mujoco/").replace(".h\"\n", ".h>\n");
+    let text = String::from_utf8(buf)
+        .unwrap()
+        .replace("#include \"mujoco/", "#include <mujoco/")
+        .replace(".h\"\n", ".h>\n");
     write_if_changed(&inc.join(name), &text);
 }
 
@@ -174,7 +236,9 @@ fn write_if_changed(path: &Path, text: &str) {
 
 /// Splits a table row "type, name, d1, d2" into its trimmed parts.
 fn parts(row: &str) -> Vec<String> {
-    row.split(',').map(|s| s.split_whitespace().collect::<Vec<_>>().join(" ")).collect()
+    row.split(',')
+        .map(|s| s.split_whitespace().collect::<Vec<_>>().join(" "))
+        .collect()
 }
 
 /// A row's second dimension in the C spelling: `@f * k` becomes `MJ_M(f)` or `MJ_M(f)*k`.
@@ -205,8 +269,10 @@ fn xblock(out: &mut String, name: &str, rows: Vec<String>) {
 
 fn xmacro_header() -> String {
     use tables::*;
-    let mut o = format!("// {NOTICE}\n\n#ifndef MUJOCO_MJXMACRO_H_\n#define MUJOCO_MJXMACRO_H_\n\n\n");
-    let join = |rows: &[&str]| -> Vec<String> { rows.iter().map(|r| parts(r).join(", ")).collect() };
+    let mut o =
+        format!("// {NOTICE}\n\n#ifndef MUJOCO_MJXMACRO_H_\n#define MUJOCO_MJXMACRO_H_\n\n\n");
+    let join =
+        |rows: &[&str]| -> Vec<String> { rows.iter().map(|r| parts(r).join(", ")).collect() };
     xblock(&mut o, "MJOPTION_FLOATS", join(OPTION_FLOATS));
     xblock(&mut o, "MJOPTION_INTS", join(OPTION_INTS));
     o.push_str("#define MJOPTION_SCALARS \\\n    MJOPTION_FLOATS \\\n    MJOPTION_INTS\n\n\n");

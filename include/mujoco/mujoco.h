@@ -60,6 +60,42 @@ void *mju_malloc(size_t size);
 
 void mju_free(void *ptr);
 
+int mj_version(void);
+
+const char *mj_versionString(void);
+
+void mj_defaultLROpt(mjLROpt *opt);
+
+void mj_defaultSolRefImp(mjtNum *solref, mjtNum *solimp);
+
+void mj_defaultOption(mjOption *opt);
+
+void mj_defaultVisual(mjVisual *vis);
+
+mjModel *mj_copyModel(mjModel *dest, const mjModel *src);
+
+void mj_deleteModel(mjModel *m);
+
+int mj_sizeModel(const mjModel *m);
+
+mjData *mj_makeData(const mjModel *m);
+
+mjData *mj_copyData(mjData *dest, const mjModel *m, const mjData *src);
+
+void mj_resetData(const mjModel *m, mjData *d);
+
+void mj_resetDataDebug(const mjModel *m, mjData *d, unsigned char debug_value);
+
+void mj_resetDataKeyframe(const mjModel *m, mjData *d, int key);
+
+void mj_deleteData(mjData *d);
+
+mjtNum *mj_stackAlloc(mjData *d, int size);
+
+void mj_saveModel(const mjModel *m, const char *filename, void *buffer, int buffer_sz);
+
+mjModel *mj_loadModel(const char *filename, const mjVFS *vfs);
+
 void mj_defaultVFS(mjVFS *vfs);
 
 int mj_addFileVFS(mjVFS *vfs, const char *directory, const char *filename);
@@ -94,38 +130,6 @@ void mj_forwardSkip(const mjModel *m, mjData *d, int skipstage, int skipsensor);
 
 void mj_inverseSkip(const mjModel *m, mjData *d, int skipstage, int skipsensor);
 
-void mj_defaultLROpt(mjLROpt *opt);
-
-void mj_defaultSolRefImp(mjtNum *solref, mjtNum *solimp);
-
-void mj_defaultOption(mjOption *opt);
-
-void mj_defaultVisual(mjVisual *vis);
-
-mjModel *mj_copyModel(mjModel *dest, const mjModel *src);
-
-void mj_saveModel(const mjModel *m, const char *filename, void *buffer, int buffer_sz);
-
-mjModel *mj_loadModel(const char *filename, const mjVFS *vfs);
-
-void mj_deleteModel(mjModel *m);
-
-int mj_sizeModel(const mjModel *m);
-
-mjData *mj_makeData(const mjModel *m);
-
-mjData *mj_copyData(mjData *dest, const mjModel *m, const mjData *src);
-
-void mj_resetData(const mjModel *m, mjData *d);
-
-void mj_resetDataDebug(const mjModel *m, mjData *d, unsigned char debug_value);
-
-void mj_resetDataKeyframe(const mjModel *m, mjData *d, int key);
-
-mjtNum *mj_stackAlloc(mjData *d, int size);
-
-void mj_deleteData(mjData *d);
-
 void mj_resetCallbacks(void);
 
 void mj_setConst(mjModel *m, mjData *d);
@@ -136,25 +140,6 @@ int mj_setLengthRange(mjModel *m,
                       const mjLROpt *opt,
                       char *error,
                       int error_sz);
-
-void mj_printFormattedModel(const mjModel *m, const char *filename, const char *float_format);
-
-void mj_printModel(const mjModel *m, const char *filename);
-
-void mj_printFormattedData(const mjModel *m,
-                           mjData *d,
-                           const char *filename,
-                           const char *float_format);
-
-void mj_printData(const mjModel *m, mjData *d, const char *filename);
-
-void mju_printMat(const mjtNum *mat, int nr, int nc);
-
-void mju_printMatSparse(const mjtNum *mat,
-                        int nr,
-                        const int *rownnz,
-                        const int *rowadr,
-                        const int *colind);
 
 void mj_fwdPosition(const mjModel *m, mjData *d);
 
@@ -331,10 +316,6 @@ mjtNum mj_getTotalmass(const mjModel *m);
 
 void mj_setTotalmass(mjModel *m, mjtNum newmass);
 
-int mj_version(void);
-
-const char *mj_versionString(void);
-
 mjtNum mj_ray(const mjModel *m,
               const mjData *d,
               const mjtNum *pnt,
@@ -376,6 +357,26 @@ void mj_warning(mjData *d, int warning, int info);
 int mj_activate(const char *filename);
 
 void mj_deactivate(void);
+
+void mjd_transitionFD(const mjModel *m,
+                      mjData *d,
+                      mjtNum eps,
+                      mjtByte centered,
+                      mjtNum *A,
+                      mjtNum *B,
+                      mjtNum *C,
+                      mjtNum *D);
+
+void mj_printFormattedModel(const mjModel *m, const char *filename, const char *float_format);
+
+void mj_printModel(const mjModel *m, const char *filename);
+
+void mj_printFormattedData(const mjModel *m,
+                           mjData *d,
+                           const char *filename,
+                           const char *float_format);
+
+void mj_printData(const mjModel *m, mjData *d, const char *filename);
 
 void mju_zero3(mjtNum *res);
 
@@ -509,6 +510,10 @@ int mju_cholUpdate(mjtNum *mat, mjtNum *x, int n, int flg_plus);
 
 int mju_eig3(mjtNum *eigval, mjtNum *eigvec, mjtNum *quat, const mjtNum *mat);
 
+int mju_QCQP2(mjtNum *res, const mjtNum *Ain, const mjtNum *bin, const mjtNum *d, mjtNum r);
+
+int mju_QCQP3(mjtNum *res, const mjtNum *Ain, const mjtNum *bin, const mjtNum *d, mjtNum r);
+
 mjtNum mju_muscleGain(mjtNum len,
                       mjtNum vel,
                       const mjtNum *lengthrange,
@@ -535,15 +540,13 @@ mjtNum mju_sign(mjtNum x);
 
 int mju_round(mjtNum x);
 
-const char *mju_type2Str(int type_);
-
-int mju_str2Type(const char *str);
-
-const char *mju_warningText(int warning, int info);
-
 int mju_isBad(mjtNum x);
 
 int mju_isZero(mjtNum *vec, int n);
+
+mjtNum mju_sigmoid(mjtNum x);
+
+mjtNum mju_Halton(int index, int base);
 
 mjtNum mju_standardNormal(mjtNum *num2);
 
@@ -559,20 +562,23 @@ void mju_insertionSort(mjtNum *list, int n);
 
 void mju_insertionSortInt(int *list, int n);
 
-mjtNum mju_Halton(int index, int base);
-
 char *mju_strncpy(char *dst, const char *src, int n);
 
-mjtNum mju_sigmoid(mjtNum x);
+const char *mju_type2Str(int type_);
 
-void mjd_transitionFD(const mjModel *m,
-                      mjData *d,
-                      mjtNum eps,
-                      mjtByte centered,
-                      mjtNum *A,
-                      mjtNum *B,
-                      mjtNum *C,
-                      mjtNum *D);
+int mju_str2Type(const char *str);
+
+const char *mju_warningText(int warning, int info);
+
+void mju_printMat(const mjtNum *mat, int nr, int nc);
+
+void mju_printMatSparse(const mjtNum *mat,
+                        int nr,
+                        const int *rownnz,
+                        const int *rowadr,
+                        const int *colind);
+
+void mju_geomSemiAxes(const mjModel *m, int geom_id, mjtNum *semiaxes);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -15,7 +15,9 @@ fn pad(offset: usize) -> usize {
 fn buffer_size(rows: impl Iterator<Item = (usize, usize)>) -> Option<usize> {
     let mut size: usize = 0;
     for (elem, count) in rows {
-        size = size.checked_add(pad(size))?.checked_add(elem.checked_mul(count)?)?;
+        size = size
+            .checked_add(pad(size))?
+            .checked_add(elem.checked_mul(count)?)?;
     }
     (size <= i32::MAX as usize).then_some(size)
 }
@@ -82,7 +84,8 @@ pub fn make_model(sizes: &mjModel) -> Result<*mut mjModel, String> {
         return Err("Invalid model: nmocap too large".into());
     }
     let rows = model_rows(sizes);
-    let nbuffer = buffer_size(rows.iter().map(|r| (r.1, r.2))).ok_or("Invalid model: buffer too large")?;
+    let nbuffer =
+        buffer_size(rows.iter().map(|r| (r.1, r.2))).ok_or("Invalid model: buffer too large")?;
     // SAFETY: all-zero bits are a valid mjModel (null pointers, zero numbers).
     let mut header: mjModel = unsafe { std::mem::zeroed() };
     copy_ints(&mut header, sizes);
@@ -93,8 +96,11 @@ pub fn make_model(sizes: &mjModel) -> Result<*mut mjModel, String> {
     let m = malloc(std::mem::size_of::<mjModel>()) as *mut mjModel;
     let buffer = malloc(nbuffer.max(1));
     if m.is_null() || buffer.is_null() {
-        free(m as *mut c_void);
-        free(buffer);
+        // SAFETY: each is NULL or a fresh allocation.
+        unsafe {
+            free(m as *mut c_void);
+            free(buffer);
+        }
         return Err("Could not allocate mjModel".into());
     }
     // SAFETY: fresh allocations of the right sizes.
@@ -130,7 +136,11 @@ pub unsafe fn delete_model(m: *mut mjModel) {
 /// # Safety
 /// `dest` is NULL or came from `make_model`; `src` came from `make_model`.
 pub unsafe fn copy_model(dest: *mut mjModel, src: &mjModel) -> Result<*mut mjModel, String> {
-    let dest = if dest.is_null() { make_model(src)? } else { dest };
+    let dest = if dest.is_null() {
+        make_model(src)?
+    } else {
+        dest
+    };
     if (*dest).nbuffer != src.nbuffer {
         return Err("dest and src models have different buffer size".into());
     }
@@ -138,7 +148,11 @@ pub unsafe fn copy_model(dest: *mut mjModel, src: &mjModel) -> Result<*mut mjMod
     std::ptr::copy_nonoverlapping(src as *const mjModel, dest, 1);
     (*dest).buffer = buffer;
     set_model_pointers(&mut *dest);
-    std::ptr::copy_nonoverlapping(src.buffer as *const u8, buffer as *mut u8, src.nbuffer as usize);
+    std::ptr::copy_nonoverlapping(
+        src.buffer as *const u8,
+        buffer as *mut u8,
+        src.nbuffer as usize,
+    );
     Ok(dest)
 }
 
@@ -155,15 +169,19 @@ pub fn size_model(m: &mjModel) -> i32 {
 /// Allocates data for `m` without resetting it.
 fn alloc_data(m: &mjModel) -> Result<*mut mjData, String> {
     let rows = data_rows(m);
-    let nbuffer = buffer_size(rows.iter().map(|r| (r.1, r.2))).ok_or("Invalid data: buffer too large")?;
+    let nbuffer =
+        buffer_size(rows.iter().map(|r| (r.1, r.2))).ok_or("Invalid data: buffer too large")?;
     let nstack = m.nstack.max(0) as usize;
     let d = malloc(std::mem::size_of::<mjData>()) as *mut mjData;
     let buffer = malloc(nbuffer.max(1));
     let stack = malloc((nstack * 8).max(1));
     if d.is_null() || buffer.is_null() || stack.is_null() {
-        free(d as *mut c_void);
-        free(buffer);
-        free(stack);
+        // SAFETY: each is NULL or a fresh allocation.
+        unsafe {
+            free(d as *mut c_void);
+            free(buffer);
+            free(stack);
+        }
         return Err("Could not allocate mjData".into());
     }
     // SAFETY: fresh allocations; all-zero bits are a valid mjData header.
@@ -200,7 +218,11 @@ pub unsafe fn delete_data(d: *mut mjData) {
 ///
 /// # Safety
 /// `dest` is NULL or was made for `m`; `src` was made for `m`.
-pub unsafe fn copy_data(dest: *mut mjData, m: &mjModel, src: &mjData) -> Result<*mut mjData, String> {
+pub unsafe fn copy_data(
+    dest: *mut mjData,
+    m: &mjModel,
+    src: &mjData,
+) -> Result<*mut mjData, String> {
     let dest = if dest.is_null() { alloc_data(m)? } else { dest };
     if (*dest).nbuffer != src.nbuffer {
         return Err("dest and src data buffers have different size".into());
@@ -216,7 +238,11 @@ pub unsafe fn copy_data(dest: *mut mjData, m: &mjModel, src: &mjData) -> Result<
     (*dest).buffer = buffer;
     (*dest).stack = stack;
     set_data_pointers(m, &mut *dest);
-    std::ptr::copy_nonoverlapping(src.buffer as *const u8, buffer as *mut u8, src.nbuffer as usize);
+    std::ptr::copy_nonoverlapping(
+        src.buffer as *const u8,
+        buffer as *mut u8,
+        src.nbuffer as usize,
+    );
     Ok(dest)
 }
 
@@ -246,20 +272,33 @@ pub unsafe fn reset_data(m: &mjModel, d: &mut mjData, debug: u8) {
 
     let mv = view::Model::new(m);
     let mut dv = view::Data::new(m, d);
-    for a in [&mut dv.qpos, &mut dv.qvel, &mut dv.act, &mut dv.ctrl, &mut dv.qfrc_applied, &mut dv.xfrc_applied] {
+    for a in [
+        &mut dv.qpos,
+        &mut dv.qvel,
+        &mut dv.act,
+        &mut dv.ctrl,
+        &mut dv.qfrc_applied,
+        &mut dv.xfrc_applied,
+    ] {
         a.fill(0.0);
     }
-    for a in [&mut dv.qacc, &mut dv.qacc_warmstart, &mut dv.act_dot, &mut dv.userdata, &mut dv.sensordata] {
+    for a in [
+        &mut dv.qacc,
+        &mut dv.qacc_warmstart,
+        &mut dv.act_dot,
+        &mut dv.userdata,
+        &mut dv.sensordata,
+    ] {
         a.fill(0.0);
     }
     dv.mocap_pos.fill(0.0);
     dv.mocap_quat.fill(0.0);
-    dv.qpos.copy_from_slice(mv.qpos0);
-    for (i, &id) in mv.body_mocapid.iter().enumerate() {
+    dv.qpos.copy_from_slice(mv.qpos0());
+    for (i, &id) in mv.body_mocapid().iter().enumerate() {
         if id >= 0 {
             let id = id as usize;
-            dv.mocap_pos[3 * id..3 * id + 3].copy_from_slice(&mv.body_pos[3 * i..3 * i + 3]);
-            dv.mocap_quat[4 * id..4 * id + 4].copy_from_slice(&mv.body_quat[4 * i..4 * i + 4]);
+            dv.mocap_pos[3 * id..3 * id + 3].copy_from_slice(&mv.body_pos()[3 * i..3 * i + 3]);
+            dv.mocap_quat[4 * id..4 * id + 4].copy_from_slice(&mv.body_quat()[4 * i..4 * i + 4]);
         }
     }
 }
@@ -277,13 +316,15 @@ pub unsafe fn reset_data_keyframe(m: &mjModel, d: &mut mjData, key: i32) {
     let mv = view::Model::new(m);
     let dv = view::Data::new(m, d);
     let rows = |a: &[f64], n: usize| -> Vec<f64> { a[k * n..(k + 1) * n].to_vec() };
-    dv.raw.time = mv.key_time[k];
-    dv.qpos.copy_from_slice(&rows(mv.key_qpos, dv.qpos.len()));
-    dv.qvel.copy_from_slice(&rows(mv.key_qvel, dv.qvel.len()));
-    dv.act.copy_from_slice(&rows(mv.key_act, dv.act.len()));
-    dv.mocap_pos.copy_from_slice(&rows(mv.key_mpos, dv.mocap_pos.len()));
-    dv.mocap_quat.copy_from_slice(&rows(mv.key_mquat, dv.mocap_quat.len()));
-    dv.ctrl.copy_from_slice(&rows(mv.key_ctrl, dv.ctrl.len()));
+    dv.raw.time = mv.key_time()[k];
+    dv.qpos.copy_from_slice(&rows(mv.key_qpos(), dv.qpos.len()));
+    dv.qvel.copy_from_slice(&rows(mv.key_qvel(), dv.qvel.len()));
+    dv.act.copy_from_slice(&rows(mv.key_act(), dv.act.len()));
+    dv.mocap_pos
+        .copy_from_slice(&rows(mv.key_mpos(), dv.mocap_pos.len()));
+    dv.mocap_quat
+        .copy_from_slice(&rows(mv.key_mquat(), dv.mocap_quat.len()));
+    dv.ctrl.copy_from_slice(&rows(mv.key_ctrl(), dv.ctrl.len()));
 }
 
 pub fn default_solref() -> [f64; 2] {
@@ -339,7 +380,13 @@ pub fn default_lropt() -> mjLROpt {
 }
 
 pub fn default_statistic() -> mjStatistic {
-    mjStatistic { meaninertia: 1.0, meanmass: 1.0, meansize: 0.2, extent: 2.0, center: [0.0; 3] }
+    mjStatistic {
+        meaninertia: 1.0,
+        meanmass: 1.0,
+        meansize: 0.2,
+        extent: 2.0,
+        center: [0.0; 3],
+    }
 }
 
 pub fn default_visual() -> mjVisual {
@@ -355,8 +402,19 @@ pub fn default_visual() -> mjVisual {
             offwidth: 640,
             offheight: 480,
         },
-        quality: mjVisualQuality { shadowsize: 4096, offsamples: 4, numslices: 28, numstacks: 16, numquads: 4 },
-        headlight: mjVisualHeadlight { ambient: [0.1; 3], diffuse: [0.4; 3], specular: [0.5; 3], active: 1 },
+        quality: mjVisualQuality {
+            shadowsize: 4096,
+            offsamples: 4,
+            numslices: 28,
+            numstacks: 16,
+            numquads: 4,
+        },
+        headlight: mjVisualHeadlight {
+            ambient: [0.1; 3],
+            diffuse: [0.4; 3],
+            specular: [0.5; 3],
+            active: 1,
+        },
         map: mjVisualMap {
             stiffness: 100.0,
             stiffnessrot: 500.0,
@@ -415,4 +473,34 @@ pub fn default_visual() -> mjVisual {
             crankbroken: rgba(0.9, 0., 0., 1.),
         },
     }
+}
+
+/// Byte offset and length of each array within a buffer laid out from `rows`.
+fn spans(rows: &[(&'static str, usize, usize)]) -> Vec<(&'static str, usize, usize)> {
+    let mut off = 0;
+    rows.iter()
+        .map(|&(name, elem, count)| {
+            off += pad(off);
+            let span = (name, off, elem * count);
+            off += elem * count;
+            span
+        })
+        .collect()
+}
+
+/// Every mjModel array as (name, byte offset in `m.buffer`, byte length), in X-macro order.
+pub fn model_spans(m: &mjModel) -> Vec<(&'static str, usize, usize)> {
+    spans(&model_rows(m))
+}
+
+/// Every mjData array as (name, byte offset in `d.buffer`, byte length), in X-macro order.
+pub fn data_spans(m: &mjModel) -> Vec<(&'static str, usize, usize)> {
+    spans(&data_rows(m))
+}
+
+/// Number of int fields and of arrays of mjModel: the MJB header's counts.
+pub fn model_counts() -> (usize, usize) {
+    // SAFETY: all-zero bits are a valid mjModel.
+    let zero: mjModel = unsafe { std::mem::zeroed() };
+    (model_ints(&zero).len(), model_rows(&zero).len())
 }

@@ -1,8 +1,8 @@
 #![allow(non_camel_case_types, non_snake_case, non_upper_case_globals)]
 
-use std::os::raw::{c_char, c_int, c_uint, c_void};
-use super::mjtnum::mjtNum;
 use super::mjmodel::*;
+use super::mjtnum::mjtNum;
+use std::os::raw::{c_int, c_void};
 
 #[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -214,11 +214,13 @@ pub struct mjData_ {
 pub type mjData = mjData_;
 
 pub type mjfGeneric = Option<unsafe extern "C" fn(m: *const mjModel, d: *mut mjData)>;
-pub type mjfConFilt =
-    Option<unsafe extern "C" fn(m: *const mjModel, d: *mut mjData, geom1: c_int, geom2: c_int) -> c_int>;
+pub type mjfConFilt = Option<
+    unsafe extern "C" fn(m: *const mjModel, d: *mut mjData, geom1: c_int, geom2: c_int) -> c_int,
+>;
 pub type mjfSensor = Option<unsafe extern "C" fn(m: *const mjModel, d: *mut mjData, stage: c_int)>;
 pub type mjfTime = Option<unsafe extern "C" fn() -> mjtNum>;
-pub type mjfAct = Option<unsafe extern "C" fn(m: *const mjModel, d: *const mjData, id: c_int) -> mjtNum>;
+pub type mjfAct =
+    Option<unsafe extern "C" fn(m: *const mjModel, d: *const mjData, id: c_int) -> mjtNum>;
 pub type mjfCollision = Option<
     unsafe extern "C" fn(
         m: *const mjModel,

@@ -1,11 +1,12 @@
 #![allow(non_camel_case_types, non_snake_case, non_upper_case_globals)]
 
-use std::os::raw::{c_char, c_int, c_uint, c_void};
 use super::mjtnum::mjtNum;
+use std::os::raw::{c_char, c_int, c_void};
 
 /// Boolean flag type.
 pub type mjtByte = std::os::raw::c_uchar;
 
+#[allow(clippy::approx_constant, clippy::excessive_precision)]
 pub const mjPI: f64 = 3.14159265358979323846;
 pub const mjMAXVAL: f64 = 1.0E10;
 pub const mjMINMU: f64 = 1.0E-5;

@@ -1,23 +1,44 @@
 //! `#[repr(C)]` mirrors of MuJoCo 2.2.2's public types: the only layout dictated from outside.
 
-#![allow(non_camel_case_types, non_snake_case, non_upper_case_globals, clippy::upper_case_acronyms)]
+#![allow(
+    non_camel_case_types,
+    non_snake_case,
+    non_upper_case_globals,
+    clippy::upper_case_acronyms
+)]
 
 #[macro_use]
 pub mod xmacro;
 
 macro_rules! elem_ty {
-    (int) => { i32 };
-    (mjtNum) => { f64 };
-    (float) => { f32 };
-    (char) => { std::os::raw::c_char };
-    (mjtByte) => { u8 };
-    (mjContact) => { mjContact };
+    (int) => {
+        i32
+    };
+    (mjtNum) => {
+        f64
+    };
+    (float) => {
+        f32
+    };
+    (char) => {
+        std::os::raw::c_char
+    };
+    (mjtByte) => {
+        u8
+    };
+    (mjContact) => {
+        mjContact
+    };
 }
 
 /// Second dimension of an X-macro row.
 macro_rules! dim2 {
-    ($m:expr, @ $f:ident * $k:literal) => { ($m.$f as usize) * $k };
-    ($m:expr, $k:expr) => { $k as usize };
+    ($m:expr, @ $f:ident * $k:literal) => {
+        ($m.$f as usize) * $k
+    };
+    ($m:expr, $k:expr) => {
+        $k as usize
+    };
 }
 
 /// Number of elements of an X-macro row, saturating at zero for corrupt sizes.
@@ -26,9 +47,12 @@ macro_rules! row_len {
 }
 
 pub mod alloc;
+pub mod mjb;
 pub mod mjdata;
 pub mod mjmodel;
 pub mod mjtnum;
+pub mod print;
+pub mod validate;
 pub mod view;
 
 pub use mjdata::*;

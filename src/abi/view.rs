@@ -5,30 +5,35 @@
 //! lists give, which `mj_makeModel`/`mj_makeData` guarantee.
 
 use super::*;
-use std::os::raw::c_char;
 
+#[inline(always)]
 unsafe fn view<'a, T>(ptr: *const T, len: usize) -> &'a [T] {
-    if len == 0 || ptr.is_null() {
-        &[]
-    } else {
-        std::slice::from_raw_parts(ptr, len)
-    }
+    view_mut(ptr as *mut T, len)
 }
 
+/// Branch-free: a NULL pointer (only ever paired with length 0) becomes a dangling one.
+#[inline(always)]
 unsafe fn view_mut<'a, T>(ptr: *mut T, len: usize) -> &'a mut [T] {
-    if len == 0 || ptr.is_null() {
-        &mut []
+    let ptr = if ptr.is_null() {
+        std::ptr::NonNull::dangling().as_ptr()
     } else {
-        std::slice::from_raw_parts_mut(ptr, len)
-    }
+        ptr
+    };
+    let len = if ptr == std::ptr::NonNull::dangling().as_ptr() {
+        0
+    } else {
+        len
+    };
+    std::slice::from_raw_parts_mut(ptr, len)
 }
 
 macro_rules! model_views {
     ($(($t:ident, $name:ident, $d1:ident, $($d2:tt)+)),* $(,)?) => {
-        /// Read-only view of a compiled model.
+        /// Read-only view of a compiled model: sizes, options and statistics through `raw`, every
+        /// array through the method of its name (free to build: slices are made on access).
+        #[derive(Clone, Copy)]
         pub struct Model<'a> {
             pub raw: &'a mjModel,
-            $(pub $name: &'a [elem_ty!($t)],)*
         }
 
         /// Writable view of a model under construction (compiler, `mj_setConst`).
@@ -40,8 +45,16 @@ macro_rules! model_views {
             /// # Safety
             /// `m` must come from `mj_makeModel` (or have the same array layout).
             pub unsafe fn new(m: &'a mjModel) -> Self {
-                Model { raw: m, $($name: view(m.$name, row_len!(m, $d1, $($d2)+)),)* }
+                Model { raw: m }
             }
+
+            $(
+                #[inline(always)]
+                pub fn $name(&self) -> &'a [elem_ty!($t)] {
+                    // SAFETY: `new`'s contract: the array has this X-macro length.
+                    unsafe { view(self.raw.$name, row_len!(self.raw, $d1, $($d2)+)) }
+                }
+            )*
         }
 
         impl<'a> ModelMut<'a> {
@@ -112,7 +125,11 @@ pub struct Arena<'a> {
 impl<'a> Arena<'a> {
     /// An arena over caller-owned memory (tests, compiler scratch).
     pub fn over(buf: &'a mut [f64]) -> Self {
-        Arena { free: buf, used: 0, peak: 0 }
+        Arena {
+            free: buf,
+            used: 0,
+            peak: 0,
+        }
     }
 
     /// `n` zeroed mjtNums, or an error like 2.2.2's "Stack overflow".
@@ -138,7 +155,11 @@ impl<'a> Arena<'a> {
 
     /// Runs `f` with a nested arena; everything it allocates is released afterwards.
     pub fn scope<R>(&mut self, f: impl FnOnce(&mut Arena<'_>) -> R) -> R {
-        let mut inner = Arena { free: &mut *self.free, used: self.used, peak: self.used };
+        let mut inner = Arena {
+            free: &mut *self.free,
+            used: self.used,
+            peak: self.used,
+        };
         let r = f(&mut inner);
         self.peak = self.peak.max(inner.peak);
         r

@@ -49,7 +49,11 @@ pub extern "C" fn _mjPRIVATE__set_xml_precision(p: c_int) {
 
 /// Appends a dated entry to MUJOCO_LOG.TXT in the working directory, as 2.2.2 does.
 pub fn write_log(kind: &str, msg: &str) {
-    if let Ok(mut f) = std::fs::OpenOptions::new().create(true).append(true).open("MUJOCO_LOG.TXT") {
+    if let Ok(mut f) = std::fs::OpenOptions::new()
+        .create(true)
+        .append(true)
+        .open("MUJOCO_LOG.TXT")
+    {
         let _ = write!(f, "{}{}: {}\n\n", asctime_now(), kind, msg);
     }
 }
@@ -63,6 +67,29 @@ fn asctime_now() -> String {
         let mut buf = [0 as c_char; 64];
         libc::asctime_r(&tm, buf.as_mut_ptr());
         CStr::from_ptr(buf.as_ptr()).to_string_lossy().into_owned()
+    }
+}
+
+/// Writes to C's `stdout`, so output interleaves with the host program's printf as in C.
+pub fn c_stdout(text: &str) {
+    extern "C" {
+        static mut stdout: *mut libc::FILE;
+    }
+    let bytes = text.as_bytes();
+    // SAFETY: glibc's stdout stream is valid for the process lifetime.
+    unsafe {
+        libc::fwrite(bytes.as_ptr() as *const c_void, 1, bytes.len(), stdout);
+    }
+}
+
+/// Flushes C's `stdout`.
+pub fn c_stdout_flush() {
+    extern "C" {
+        static mut stdout: *mut libc::FILE;
+    }
+    // SAFETY: as in `c_stdout`.
+    unsafe {
+        libc::fflush(stdout);
     }
 }
 
@@ -83,8 +110,8 @@ pub fn error(msg: &str) {
             h(text.as_ptr() as *const c_char);
         } else {
             write_log("ERROR", msg);
-            print!("ERROR: {msg}\n\nPress Enter to exit ...");
-            let _ = std::io::stdout().flush();
+            c_stdout(&format!("ERROR: {msg}\n\nPress Enter to exit ..."));
+            c_stdout_flush();
             libc::getchar();
             libc::exit(1);
         }
@@ -102,8 +129,7 @@ pub fn warning(msg: &str) {
             h(text.as_ptr() as *const c_char);
         } else {
             write_log("WARNING", msg);
-            print!("WARNING: {msg}\n\n");
-            let _ = std::io::stdout().flush();
+            c_stdout(&format!("WARNING: {msg}\n\n"));
         }
     }
 }
@@ -207,17 +233,17 @@ pub fn malloc(size: usize) -> *mut c_void {
 }
 
 /// Frees memory from `malloc`, through the user deallocator when set.
-pub fn free(ptr: *mut c_void) {
+///
+/// # Safety
+/// `ptr` is NULL or came from `malloc` and was not freed.
+pub unsafe fn free(ptr: *mut c_void) {
     if ptr.is_null() {
         return;
     }
-    // SAFETY: ptr came from `malloc` (the caller's contract, as in C).
-    unsafe {
-        if let Some(f) = mju_user_free {
-            f(ptr)
-        } else {
-            libc::free(ptr)
-        }
+    if let Some(f) = mju_user_free {
+        f(ptr)
+    } else {
+        libc::free(ptr)
     }
 }
 
@@ -226,6 +252,6 @@ pub extern "C" fn mju_malloc(size: usize) -> *mut c_void {
     malloc(size)
 }
 #[no_mangle]
-pub extern "C" fn mju_free(ptr: *mut c_void) {
+pub unsafe extern "C" fn mju_free(ptr: *mut c_void) {
     free(ptr)
 }

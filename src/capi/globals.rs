@@ -59,8 +59,13 @@ pub static mjDISABLESTRING: StrTable<13> = StrTable([
 ]);
 
 #[no_mangle]
-pub static mjENABLESTRING: StrTable<5> =
-    StrTable([c!("Override"), c!("Energy"), c!("Fwdinv"), c!("Sensornoise"), c!("MultiCCD")]);
+pub static mjENABLESTRING: StrTable<5> = StrTable([
+    c!("Override"),
+    c!("Energy"),
+    c!("Fwdinv"),
+    c!("Sensornoise"),
+    c!("MultiCCD"),
+]);
 
 #[no_mangle]
 pub static mjTIMERSTRING: StrTable<13> = StrTable([

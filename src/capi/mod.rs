@@ -6,8 +6,11 @@ pub mod engine;
 pub mod errmem;
 pub mod globals;
 pub mod io;
+#[rustfmt::skip]
 pub mod pending;
+#[rustfmt::skip]
 pub mod pending_internal;
+pub mod print;
 pub mod util;
 pub mod xml;
 

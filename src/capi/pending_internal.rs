@@ -1,6 +1,6 @@
 //! Symbols 2.2.2 exports outside mujoco.h not implemented yet: each reports that through `mju_error`.
 
-#![allow(unused_variables)]
+#![allow(unused_variables, unused_imports)]
 
 use crate::abi::*;
 use std::os::raw::{c_char, c_int, c_void};
@@ -54,12 +54,6 @@ pub unsafe extern "C" fn mj_stepSkip(m: *const mjModel, d: *mut mjData, skipstag
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_validateReferences(m: *const mjModel) -> *const c_char {
-    pending("mj_validateReferences");
-    std::ptr::null()
-}
-
-#[no_mangle]
 pub unsafe extern "C" fn mjd_passive_vel(m: *const mjModel, d: *mut mjData, DfDv: *mut mjtNum) {
     pending("mjd_passive_vel");
 }
@@ -77,21 +71,4 @@ pub unsafe extern "C" fn mjd_smooth_vel(m: *const mjModel, d: *mut mjData) {
 #[no_mangle]
 pub unsafe extern "C" fn mjd_smooth_velFD(m: *const mjModel, d: *mut mjData, eps: mjtNum) {
     pending("mjd_smooth_velFD");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mju_QCQP2(res: *mut mjtNum, Ain: *const mjtNum, bin: *const mjtNum, d: *const mjtNum, r: mjtNum) -> c_int {
-    pending("mju_QCQP2");
-    0 as c_int
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mju_QCQP3(res: *mut mjtNum, Ain: *const mjtNum, bin: *const mjtNum, d: *const mjtNum, r: mjtNum) -> c_int {
-    pending("mju_QCQP3");
-    0 as c_int
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mju_geomSemiAxes(m: *const mjModel, geom_id: c_int, semiaxes: *mut mjtNum) {
-    pending("mju_geomSemiAxes");
 }

@@ -1,1 +1,64 @@
 //! Spatial algebra, quaternions, small dense and sparse linear algebra.
+//!
+//! Everything here reproduces the arithmetic of MuJoCo 2.2.2 operation by operation,
+//! so that results agree bit for bit with the reference.
+
+pub mod blas;
+pub mod chol;
+pub mod eig3;
+pub mod misc;
+pub mod qcqp;
+pub mod quat;
+pub mod spatial;
+pub mod vec3;
+
+pub use eig3::{eig3, Eig3};
+pub use quat::*;
+pub use spatial::*;
+pub use vec3::*;
+
+/// 3D vector.
+pub type Vec3 = [f64; 3];
+/// Quaternion (w, x, y, z).
+pub type Quat = [f64; 4];
+/// 3x3 matrix, row-major.
+pub type Mat3 = [f64; 9];
+/// Spatial vector: [rotational; linear].
+pub type Vec6 = [f64; 6];
+
+/// Smallest value treated as nonzero by normalizations.
+pub const MINVAL: f64 = 1e-15;
+/// The constant pi as MuJoCo spells it.
+pub const PI: f64 = std::f64::consts::PI;
+
+/// First `N` elements of a slice as an array.
+#[inline]
+pub fn arr<const N: usize>(s: &[f64]) -> [f64; N] {
+    let mut r = [0.0; N];
+    r.copy_from_slice(&s[..N]);
+    r
+}
+
+/// First 3 elements of a slice.
+#[inline]
+pub fn v3(s: &[f64]) -> Vec3 {
+    arr(s)
+}
+
+/// First 4 elements of a slice.
+#[inline]
+pub fn q4(s: &[f64]) -> Quat {
+    arr(s)
+}
+
+/// First 9 elements of a slice.
+#[inline]
+pub fn m9(s: &[f64]) -> Mat3 {
+    arr(s)
+}
+
+/// First 6 elements of a slice.
+#[inline]
+pub fn v6(s: &[f64]) -> Vec6 {
+    arr(s)
+}

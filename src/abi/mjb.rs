@@ -1,0 +1,141 @@
+//! MJB, 2.2.2's binary model format: a 4-int header, the int fields, mjOption, mjVisual,
+//! mjStatistic, then every X-macro array unpadded, in order.
+
+use super::alloc::{make_model, model_counts, model_spans};
+use super::*;
+
+const ID: i32 = 54321;
+
+/// Plain-old-data view of a struct's bytes.
+fn bytes_of<T>(v: &T) -> &[u8] {
+    // SAFETY: T is a repr(C) ABI struct without padding-sensitive invariants; reading bytes is fine.
+    unsafe { std::slice::from_raw_parts(v as *const T as *const u8, std::mem::size_of::<T>()) }
+}
+
+fn header() -> [i32; 4] {
+    let (nint, nptr) = model_counts();
+    [
+        ID,
+        std::mem::size_of::<mjtNum>() as i32,
+        nint as i32,
+        nptr as i32,
+    ]
+}
+
+/// Serializes a model.
+pub fn save(m: &mjModel) -> Vec<u8> {
+    let (nint, _) = model_counts();
+    let mut out = Vec::with_capacity(alloc::size_model(m) as usize);
+    for v in header() {
+        out.extend_from_slice(&v.to_ne_bytes());
+    }
+    out.extend_from_slice(&bytes_of(m)[..nint * 4]);
+    out.extend_from_slice(bytes_of(&m.opt));
+    out.extend_from_slice(bytes_of(&m.vis));
+    out.extend_from_slice(bytes_of(&m.stat));
+    // SAFETY: the buffer holds nbuffer bytes.
+    let buf = unsafe { std::slice::from_raw_parts(m.buffer as *const u8, m.nbuffer as usize) };
+    for (_, off, len) in model_spans(m) {
+        out.extend_from_slice(&buf[off..off + len]);
+    }
+    out
+}
+
+struct Reader<'a> {
+    data: &'a [u8],
+    pos: usize,
+}
+
+impl Reader<'_> {
+    fn take(&mut self, n: usize, what: &str) -> Result<&[u8], String> {
+        if self.pos + n > self.data.len() {
+            return Err(what.to_string());
+        }
+        let s = &self.data[self.pos..self.pos + n];
+        self.pos += n;
+        Ok(s)
+    }
+}
+
+/// Copies `src` over the bytes of a plain ABI struct.
+fn fill<T>(dst: &mut T, src: &[u8]) {
+    // SAFETY: src has exactly size_of::<T>() bytes and T accepts any bit pattern of its fields
+    // (numbers); callers use it only for mjOption, mjVisual, mjStatistic and int prefixes.
+    unsafe { std::ptr::copy_nonoverlapping(src.as_ptr(), dst as *mut T as *mut u8, src.len()) }
+}
+
+/// Parses an MJB image into a new model; errors carry 2.2.2's warning texts.
+pub fn load(data: &[u8]) -> Result<*mut mjModel, String> {
+    let (nint, _) = model_counts();
+    let mut r = Reader { data, pos: 0 };
+    let head = r.take(16, "Model file has an incomplete header")?;
+    let expected = header();
+    let msgs = [
+        "Model missing header ID",
+        "Model and executable have different floating point precision",
+        "Model and executable have different number of ints in mjModel",
+        "Model and executable have different number of pointers in mjModel",
+    ];
+    for i in 0..4 {
+        let v = i32::from_ne_bytes(head[4 * i..4 * i + 4].try_into().unwrap());
+        if v != expected[i] {
+            return Err(msgs[i].into());
+        }
+    }
+    let ints = r
+        .take(nint * 4, "Model file does not contain enough ints")?
+        .to_vec();
+    // SAFETY: all-zero bits are a valid mjModel; only the int prefix is filled.
+    let mut sizes: mjModel = unsafe { std::mem::zeroed() };
+    fill(&mut sizes, &ints);
+    let m = make_model(&sizes).map_err(|_| "Corrupted model, wrong size parameters".to_string())?;
+    // SAFETY: m is a fresh model; its buffer has nbuffer bytes.
+    unsafe {
+        let mm = &mut *m;
+        if mm.nbuffer != sizes.nbuffer {
+            alloc::delete_model(m);
+            return Err("Corrupted model, wrong size parameters".into());
+        }
+        let result = (|| -> Result<(), String> {
+            fill(
+                &mut mm.opt,
+                r.take(
+                    std::mem::size_of::<mjOption>(),
+                    "Model file does not have a complete mjOption",
+                )?,
+            );
+            fill(
+                &mut mm.vis,
+                r.take(
+                    std::mem::size_of::<mjVisual>(),
+                    "Model file does not have a complete mjVisual",
+                )?,
+            );
+            fill(
+                &mut mm.stat,
+                r.take(
+                    std::mem::size_of::<mjStatistic>(),
+                    "Model file does not have a complete mjStatistic",
+                )?,
+            );
+            let buf = std::slice::from_raw_parts_mut(mm.buffer as *mut u8, mm.nbuffer as usize);
+            for (_, off, len) in model_spans(mm) {
+                buf[off..off + len].copy_from_slice(
+                    r.take(len, "Model file does not contain a large enough buffer")?,
+                );
+            }
+            if r.pos != data.len() {
+                return Err("Model file is too large".into());
+            }
+            match validate::validate_references(view::Model::new(mm)) {
+                Some(e) => Err(e.into()),
+                None => Ok(()),
+            }
+        })();
+        if let Err(e) = result {
+            alloc::delete_model(m);
+            return Err(e);
+        }
+    }
+    Ok(m)
+}

@@ -1,0 +1,237 @@
+//! Dense vectors and matrices of any size, with MuJoCo's summation orders.
+//!
+//! Matrices are row-major slices. Functions taking `res` overwrite its first elements.
+
+use super::MINVAL;
+
+pub fn zero(res: &mut [f64]) {
+    res.fill(0.0);
+}
+
+pub fn copy(res: &mut [f64], vec: &[f64]) {
+    res.copy_from_slice(&vec[..res.len()]);
+}
+
+pub fn sum(vec: &[f64]) -> f64 {
+    let mut s = 0.0;
+    for x in vec {
+        s += x;
+    }
+    s
+}
+
+/// Sum of absolute values.
+pub fn l1(vec: &[f64]) -> f64 {
+    let mut s = 0.0;
+    for x in vec {
+        s += x.abs();
+    }
+    s
+}
+
+/// res = vec * s
+pub fn scl(res: &mut [f64], vec: &[f64], s: f64) {
+    for (r, v) in res.iter_mut().zip(vec) {
+        *r = v * s;
+    }
+}
+
+/// res *= s
+pub fn scl_in_place(res: &mut [f64], s: f64) {
+    for r in res.iter_mut() {
+        *r *= s;
+    }
+}
+
+/// res = a + b
+pub fn add(res: &mut [f64], a: &[f64], b: &[f64]) {
+    for ((r, x), y) in res.iter_mut().zip(a).zip(b) {
+        *r = x + y;
+    }
+}
+
+/// res = a - b
+pub fn sub(res: &mut [f64], a: &[f64], b: &[f64]) {
+    for ((r, x), y) in res.iter_mut().zip(a).zip(b) {
+        *r = x - y;
+    }
+}
+
+/// res += vec
+pub fn add_to(res: &mut [f64], vec: &[f64]) {
+    for (r, v) in res.iter_mut().zip(vec) {
+        *r += v;
+    }
+}
+
+/// res -= vec
+pub fn sub_from(res: &mut [f64], vec: &[f64]) {
+    for (r, v) in res.iter_mut().zip(vec) {
+        *r -= v;
+    }
+}
+
+/// res += vec * s
+pub fn add_to_scl(res: &mut [f64], vec: &[f64], s: f64) {
+    for (r, v) in res.iter_mut().zip(vec) {
+        *r += v * s;
+    }
+}
+
+/// res = a + b * s
+pub fn add_scl(res: &mut [f64], a: &[f64], b: &[f64], s: f64) {
+    for ((r, x), y) in res.iter_mut().zip(a).zip(b) {
+        *r = x + y * s;
+    }
+}
+
+/// Dot product of the first `n` elements, summed in four interleaved partial sums
+/// over blocks of four, then the remainder (MuJoCo's order).
+pub fn dot(a: &[f64], b: &[f64], n: usize) -> f64 {
+    let (a, b) = (&a[..n], &b[..n]);
+    let blocks = n / 4;
+    let mut p = [0.0f64; 4];
+    for k in 0..blocks {
+        let i = 4 * k;
+        p[0] += a[i] * b[i];
+        p[1] += a[i + 1] * b[i + 1];
+        p[2] += a[i + 2] * b[i + 2];
+        p[3] += a[i + 3] * b[i + 3];
+    }
+    let mut s = (p[0] + p[2]) + (p[1] + p[3]);
+    let i = 4 * blocks;
+    match n - i {
+        3 => s += a[i] * b[i] + a[i + 1] * b[i + 1] + a[i + 2] * b[i + 2],
+        2 => s += a[i] * b[i] + a[i + 1] * b[i + 1],
+        1 => s += a[i] * b[i],
+        _ => {}
+    }
+    s
+}
+
+pub fn norm(vec: &[f64]) -> f64 {
+    dot(vec, vec, vec.len()).sqrt()
+}
+
+/// Normalizes in place, returns the norm before; (1,0,..,0) when the norm is below MINVAL.
+pub fn normalize(vec: &mut [f64]) -> f64 {
+    let n = norm(vec);
+    if n < MINVAL {
+        if let Some((first, rest)) = vec.split_first_mut() {
+            *first = 1.0;
+            rest.fill(0.0);
+        }
+    } else {
+        let inv = 1.0 / n;
+        for x in vec.iter_mut() {
+            *x *= inv;
+        }
+    }
+    n
+}
+
+/// res (nr) = mat (nr x nc) * vec (nc)
+pub fn mul_mat_vec(res: &mut [f64], mat: &[f64], vec: &[f64], nr: usize, nc: usize) {
+    for r in 0..nr {
+        res[r] = dot(&mat[r * nc..], vec, nc);
+    }
+}
+
+/// res (nc) = mat^T * vec (nr), rows with zero weight skipped.
+pub fn mul_mat_t_vec(res: &mut [f64], mat: &[f64], vec: &[f64], nr: usize, nc: usize) {
+    let res = &mut res[..nc];
+    zero(res);
+    for r in 0..nr {
+        let s = vec[r];
+        if s != 0.0 {
+            add_to_scl(res, &mat[r * nc..(r + 1) * nc], s);
+        }
+    }
+}
+
+/// res (nc x nr) = mat^T
+pub fn transpose(res: &mut [f64], mat: &[f64], nr: usize, nc: usize) {
+    for i in 0..nr {
+        for j in 0..nc {
+            res[j * nr + i] = mat[i * nc + j];
+        }
+    }
+}
+
+/// res (r1 x c2) = mat1 (r1 x c1) * mat2 (c1 x c2), zeros of mat1 skipped.
+pub fn mul_mat_mat(res: &mut [f64], mat1: &[f64], mat2: &[f64], r1: usize, c1: usize, c2: usize) {
+    zero(&mut res[..r1 * c2]);
+    for i in 0..r1 {
+        for k in 0..c1 {
+            let s = mat1[i * c1 + k];
+            if s != 0.0 {
+                add_to_scl(
+                    &mut res[i * c2..(i + 1) * c2],
+                    &mat2[k * c2..(k + 1) * c2],
+                    s,
+                );
+            }
+        }
+    }
+}
+
+/// res (r1 x r2) = mat1 (r1 x c1) * mat2^T (mat2 is r2 x c1).
+pub fn mul_mat_mat_t(res: &mut [f64], mat1: &[f64], mat2: &[f64], r1: usize, c1: usize, r2: usize) {
+    for i in 0..r1 {
+        for j in 0..r2 {
+            res[i * r2 + j] = dot(&mat1[i * c1..], &mat2[j * c1..], c1);
+        }
+    }
+}
+
+/// res (c1 x c2) = mat1^T * mat2 (mat1 is r1 x c1, mat2 r1 x c2), zeros of mat1 skipped.
+pub fn mul_mat_t_mat(res: &mut [f64], mat1: &[f64], mat2: &[f64], r1: usize, c1: usize, c2: usize) {
+    zero(&mut res[..c1 * c2]);
+    for i in 0..r1 {
+        for j in 0..c1 {
+            let s = mat1[i * c1 + j];
+            if s != 0.0 {
+                add_to_scl(
+                    &mut res[j * c2..(j + 1) * c2],
+                    &mat2[i * c2..(i + 1) * c2],
+                    s,
+                );
+            }
+        }
+    }
+}
+
+/// res (nc x nc) = mat^T * diag(d) * mat, or mat^T * mat without `diag`; mat is nr x nc.
+/// The lower triangle is accumulated, then mirrored.
+pub fn sqr_mat_td(res: &mut [f64], mat: &[f64], diag: Option<&[f64]>, nr: usize, nc: usize) {
+    zero(&mut res[..nc * nc]);
+    match diag {
+        Some(d) => {
+            for j in 0..nr {
+                if d[j] != 0.0 {
+                    for i in 0..nc {
+                        let s = mat[j * nc + i];
+                        if s != 0.0 {
+                            add_to_scl(&mut res[i * nc..i * nc + i + 1], &mat[j * nc..], s * d[j]);
+                        }
+                    }
+                }
+            }
+        }
+        None => {
+            for i in 0..nc {
+                for j in 0..nr {
+                    let s = mat[j * nc + i];
+                    if s != 0.0 {
+                        add_to_scl(&mut res[i * nc..i * nc + i + 1], &mat[j * nc..], s);
+                    }
+                }
+            }
+        }
+    }
+    for i in 0..nc {
+        for j in i + 1..nc {
+            res[i * nc + j] = res[j * nc + i];
+        }
+    }
+}

@@ -1,0 +1,87 @@
+//! Dense Cholesky factorization, solve and rank-one update (lower triangle, in place).
+
+use super::blas::dot;
+use super::MINVAL;
+
+/// Factorizes the n x n matrix in place as L*L' (L in the lower triangle; the strict upper
+/// triangle is left untouched). Diagonal values below `mindiag` are replaced by it;
+/// returns n minus the number of replacements.
+pub fn chol_factor(mat: &mut [f64], n: usize, mindiag: f64) -> usize {
+    let mut rank = n;
+    for j in 0..n {
+        let mut d = mat[j * (n + 1)];
+        if j > 0 {
+            d -= dot(&mat[j * n..], &mat[j * n..], j);
+        }
+        if d < mindiag {
+            d = mindiag;
+            rank -= 1;
+        }
+        mat[j * (n + 1)] = d.sqrt();
+        let inv = 1.0 / mat[j * (n + 1)];
+        for i in j + 1..n {
+            let (head, tail) = mat.split_at_mut(i * n);
+            let rowj = &head[j * n..j * n + j];
+            let s = dot(&tail[..j], rowj, j);
+            tail[j] = (tail[j] - s) * inv;
+        }
+    }
+    rank
+}
+
+/// Solves L*L' * x = x in place, given the factor from `chol_factor`.
+pub fn chol_solve_in_place(mat: &[f64], x: &mut [f64], n: usize) {
+    for i in 0..n {
+        if i > 0 {
+            let s = dot(&mat[i * n..], x, i);
+            x[i] -= s;
+        }
+        x[i] /= mat[i * (n + 1)];
+    }
+    for i in (0..n).rev() {
+        for j in i + 1..n {
+            x[i] -= mat[j * n + i] * x[j];
+        }
+        x[i] /= mat[i * (n + 1)];
+    }
+}
+
+/// res = (L*L')^-1 * vec.
+pub fn chol_solve(res: &mut [f64], mat: &[f64], vec: &[f64], n: usize) {
+    res[..n].copy_from_slice(&vec[..n]);
+    chol_solve_in_place(mat, res, n);
+}
+
+/// Updates the factor to that of L*L' + x*x' (flg_plus) or L*L' - x*x'; `x` is overwritten.
+/// Returns n minus the number of diagonals clamped to MINVAL.
+pub fn chol_update(mat: &mut [f64], x: &mut [f64], n: usize, flg_plus: bool) -> usize {
+    let mut rank = n;
+    for k in 0..n {
+        if x[k] == 0.0 {
+            continue;
+        }
+        let lkk = mat[k * (n + 1)];
+        let mut t = lkk * lkk + if flg_plus { x[k] * x[k] } else { -x[k] * x[k] };
+        if t < MINVAL {
+            t = MINVAL;
+            rank -= 1;
+        }
+        let r = t.sqrt();
+        let c = r / lkk;
+        let cinv = 1.0 / c;
+        let s = x[k] / lkk;
+        mat[k * (n + 1)] = r;
+        for i in k + 1..n {
+            let m = &mut mat[i * n + k];
+            *m = if flg_plus {
+                (*m + s * x[i]) * cinv
+            } else {
+                (*m - s * x[i]) * cinv
+            };
+        }
+        for i in k + 1..n {
+            x[i] = c * x[i] - s * mat[i * n + k];
+        }
+    }
+    rank
+}
