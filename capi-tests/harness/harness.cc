@@ -3,6 +3,7 @@
 //
 //   harness-ref  record  MODEL DIR   reference run: model, trajectory, states, all checks -> DIR/ref
 //   harness-ours replay  MODEL DIR   our run: the same checks at the reference's states -> DIR/ours
+//   (record/replay MODEL DIR --model-only: the compiled model only)
 //   harness-ref  compare DIR [-v] [--groups a,b]   worst relative error per quantity, exit 1 on
 //                                    any failure (all groups, or the listed ones)
 //
@@ -97,7 +98,7 @@ std::string saved(const Writer& w, const std::string& path) {
 
 const int kSeconds = 120;
 
-int record(const char* model, const std::string& dir) {
+int record(const char* model, const std::string& dir, bool model_only) {
   std::string out = dir + "/ref/";
   bool ok = isolated(out + "model.status", [&]() -> std::string {
     std::string e;
@@ -107,6 +108,7 @@ int record(const char* model, const std::string& dir) {
     dump_model(m, w);
     return saved(w, out + "model.bin");
   }, kSeconds);
+  if (model_only) return ok ? 0 : 1;
   ok = isolated(out + "traj.status", [&]() -> std::string {
     std::string e;
     mjModel* m = load(model, e);
@@ -136,7 +138,7 @@ int record(const char* model, const std::string& dir) {
   return ok ? 0 : 1;
 }
 
-int replay(const char* model, const std::string& dir) {
+int replay(const char* model, const std::string& dir, bool model_only) {
   std::string out = dir + "/ours/";
   std::string ref = dir + "/ref/";
   std::remove((out + "traj.note").c_str());
@@ -148,6 +150,7 @@ int replay(const char* model, const std::string& dir) {
     dump_model(m, w);
     return saved(w, out + "model.bin");
   }, kSeconds);
+  if (model_only) return 0;
   Reader refmodel;
   bool have_ref = refmodel.load(ref + "model.bin");
   // our loader's result decides the trajectory's model (a failing mj_loadXML cannot return)
@@ -235,7 +238,7 @@ bool right_library() {
 
 int usage() {
   std::fprintf(stderr,
-               "usage: harness record MODEL DIR | harness replay MODEL DIR | "
+               "usage: harness record MODEL DIR [--model-only] | harness replay MODEL DIR [--model-only] | "
                "harness compare DIR [-v] [--groups g1,g2,...]\n");
   return 2;
 }
@@ -261,7 +264,8 @@ int main(int argc, char** argv) {
   mkdir(dir.c_str(), 0755);
   mkdir((dir + "/ref").c_str(), 0755);
   mkdir((dir + "/ours").c_str(), 0755);
-  if (mode == "record") return record(argv[2], dir);
-  if (mode == "replay") return replay(argv[2], dir);
+  bool model_only = argc > 4 && !std::strcmp(argv[4], "--model-only");
+  if (mode == "record") return record(argv[2], dir, model_only);
+  if (mode == "replay") return replay(argv[2], dir, model_only);
   return usage();
 }
