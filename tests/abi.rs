@@ -28,6 +28,33 @@ fn layout_matches_reference() {
     assert!(rl.len() > 800, "layout program printed only {} lines", rl.len());
 }
 
+/// Every function and variable of 2.2.2's mujoco.h is declared by our mujoco.h with the same
+/// type (capi-tests/api_decls.c, compiled with -Werror).
+#[test]
+fn declarations_match_reference() {
+    let compile = |include: Option<std::path::PathBuf>| {
+        let mut cmd = Command::new("gcc");
+        cmd.args(["-std=c11", "-Wall", "-Werror", "-fsyntax-only"]);
+        if let Some(i) = include {
+            cmd.arg("-I").arg(i);
+        }
+        cmd.arg(root().join("capi-tests/api_decls.c"));
+        cmd.output().expect("gcc not found: install build-essential")
+    };
+    require_reference();
+    let reference = compile(None);
+    assert!(reference.status.success(), "api_decls.c fails with the reference headers:\n{}", text(&reference.stderr));
+    let ours = compile(Some(root().join("include")));
+    let errors: Vec<String> = text(&ours.stderr).lines().filter(|l| l.contains("error")).map(String::from).collect();
+    report("declarations", &format!("declarations: {} errors against our mujoco.h\n", errors.len()));
+    assert!(
+        ours.status.success(),
+        "our include/mujoco/mujoco.h lacks or mistypes {} declarations of 2.2.2:\n{}",
+        errors.len(),
+        errors.join("\n")
+    );
+}
+
 /// API symbols a library defines (nm -D --defined-only), with their nm type letter.
 fn api_symbols(lib: &std::path::Path) -> Vec<(String, char)> {
     let o = Command::new("nm").args(["-D", "--defined-only"]).arg(lib).output().expect("nm (binutils) missing");
