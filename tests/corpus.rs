@@ -14,11 +14,20 @@ fn corpus_dir() -> Option<PathBuf> {
         Some(root().join("../shared/corpus")),
         Some(PathBuf::from("/work/shared/corpus")),
     ];
-    candidates.into_iter().flatten().find(|p| p.is_dir()).and_then(|p| p.canonicalize().ok())
+    candidates
+        .into_iter()
+        .flatten()
+        .find(|p| p.is_dir())
+        .and_then(|p| p.canonicalize().ok())
 }
 
 fn xml_files(dir: &Path, out: &mut Vec<PathBuf>) {
-    let mut entries: Vec<_> = std::fs::read_dir(dir).into_iter().flatten().flatten().map(|e| e.path()).collect();
+    let mut entries: Vec<_> = std::fs::read_dir(dir)
+        .into_iter()
+        .flatten()
+        .flatten()
+        .map(|e| e.path())
+        .collect();
     entries.sort();
     for p in entries {
         if p.is_dir() {
@@ -38,8 +47,14 @@ fn corpus_compiled_models() {
     require_reference();
     require_eigen();
     our_lib();
-    let o = Command::new(root().join("capi-tests/build")).output().unwrap();
-    assert!(o.status.success(), "building the harness failed:\n{}", text(&o.stderr));
+    let o = Command::new(root().join("capi-tests/build"))
+        .output()
+        .unwrap();
+    assert!(
+        o.status.success(),
+        "building the harness failed:\n{}",
+        text(&o.stderr)
+    );
     let bin = PathBuf::from(text(&o.stdout).trim());
     let mut files = Vec::new();
     xml_files(&corpus, &mut files);
@@ -48,19 +63,42 @@ fn corpus_compiled_models() {
     for (i, f) in files.iter().enumerate() {
         let dir = base.join(i.to_string());
         let _ = std::fs::remove_dir_all(&dir);
-        let (fs, ds) = (f.to_string_lossy().to_string(), dir.to_string_lossy().to_string());
-        let r = run(&bin.join("harness-ref"), &["record", &fs, &ds, "--model-only"], &[], 120);
+        let (fs, ds) = (
+            f.to_string_lossy().to_string(),
+            dir.to_string_lossy().to_string(),
+        );
+        let r = run(
+            &bin.join("harness-ref"),
+            &["record", &fs, &ds, "--model-only"],
+            &[],
+            120,
+        );
         if !r.status.success() {
             rejected += 1; // include files and deliberately malformed models
             continue;
         }
-        run(&bin.join("harness-ours"), &["replay", &fs, &ds, "--model-only"], &[], 120);
-        let c = run(&bin.join("harness-ref"), &["compare", &ds, "--groups", "model"], &[], 120);
+        run(
+            &bin.join("harness-ours"),
+            &["replay", &fs, &ds, "--model-only"],
+            &[],
+            120,
+        );
+        let c = run(
+            &bin.join("harness-ref"),
+            &["compare", &ds, "--groups", "model"],
+            &[],
+            120,
+        );
         let rel = f.strip_prefix(&corpus).unwrap_or(f).display().to_string();
         if c.status.success() {
             same.push(rel);
         } else {
-            let why = text(&c.stdout).lines().next().unwrap_or("").trim().to_string();
+            let why = text(&c.stdout)
+                .lines()
+                .next()
+                .unwrap_or("")
+                .trim()
+                .to_string();
             differ.push(format!("{rel}: {why}"));
         }
     }

@@ -13,13 +13,24 @@ fn harness_bin() -> PathBuf {
     require_reference();
     require_eigen();
     our_lib();
-    let o = Command::new(root().join("capi-tests/build")).output().expect("bash missing");
-    assert!(o.status.success(), "building the harness failed:\n{}{}", text(&o.stdout), text(&o.stderr));
+    let o = Command::new(root().join("capi-tests/build"))
+        .output()
+        .expect("bash missing");
+    assert!(
+        o.status.success(),
+        "building the harness failed:\n{}{}",
+        text(&o.stdout),
+        text(&o.stderr)
+    );
     PathBuf::from(text(&o.stdout).trim())
 }
 
 fn stem(model: &str) -> String {
-    PathBuf::from(model).file_stem().unwrap().to_string_lossy().into_owned()
+    PathBuf::from(model)
+        .file_stem()
+        .unwrap()
+        .to_string_lossy()
+        .into_owned()
 }
 
 /// Records the reference and replays ours for every listed model, once per test process.
@@ -33,7 +44,12 @@ fn results() -> &'static (PathBuf, PathBuf) {
             let _ = std::fs::remove_dir_all(&dir);
             let d = dir.to_string_lossy().to_string();
             let r = run(&bin.join("harness-ref"), &["record", &model, &d], &[], 300);
-            assert!(r.status.success(), "reference run failed on {model}:\n{}{}", text(&r.stdout), text(&r.stderr));
+            assert!(
+                r.status.success(),
+                "reference run failed on {model}:\n{}{}",
+                text(&r.stdout),
+                text(&r.stderr)
+            );
             run(&bin.join("harness-ours"), &["replay", &model, &d], &[], 300);
             let full = run(&bin.join("harness-ref"), &["compare", &d, "-v"], &[], 120);
             std::fs::write(dir.join("report.txt"), &full.stdout).unwrap();
@@ -41,12 +57,16 @@ fn results() -> &'static (PathBuf, PathBuf) {
         let summary: String = models()
             .iter()
             .map(|m| {
-                let t = std::fs::read_to_string(base.join(stem(m)).join("report.txt")).unwrap_or_default();
+                let t = std::fs::read_to_string(base.join(stem(m)).join("report.txt"))
+                    .unwrap_or_default();
                 let last = t.lines().last().unwrap_or("no report").trim().to_string();
                 format!("  {m}: {last}\n")
             })
             .collect();
-        report("differential", &format!("differential (details: target/capi-tests/diff/*/report.txt):\n{summary}"));
+        report(
+            "differential",
+            &format!("differential (details: target/capi-tests/diff/*/report.txt):\n{summary}"),
+        );
         (bin, base)
     })
 }
@@ -58,7 +78,12 @@ fn check(groups: &str) {
     let mut all = String::new();
     for model in models() {
         let d = base.join(stem(&model)).to_string_lossy().to_string();
-        let o = run(&bin.join("harness-ref"), &["compare", &d, "--groups", groups], &[], 120);
+        let o = run(
+            &bin.join("harness-ref"),
+            &["compare", &d, "--groups", groups],
+            &[],
+            120,
+        );
         let out = format!("model {model}\n{}", text(&o.stdout));
         if !o.status.success() {
             failures.push_str(&out);
@@ -66,7 +91,10 @@ fn check(groups: &str) {
         all.push_str(&out);
     }
     report(&format!("differential-{}", groups.replace(',', "-")), &all);
-    assert!(failures.is_empty(), "differences from MuJoCo 2.2.2 (relative error |a-b|/max(1,|a|,|b|)):\n{failures}");
+    assert!(
+        failures.is_empty(),
+        "differences from MuJoCo 2.2.2 (relative error |a-b|/max(1,|a|,|b|)):\n{failures}"
+    );
 }
 
 #[test]
@@ -117,7 +145,14 @@ fn harness_self_check() {
         assert!(r.status.success(), "reference run failed on {model}");
         run(&bin.join("harness-ref"), &["replay", &model, &d], &[], 300);
         let c = run(&bin.join("harness-ref"), &["compare", &d], &[], 120);
-        assert!(c.status.success(), "reference differs from itself on {model}:\n{}", text(&c.stdout));
-        assert!(text(&c.stdout).contains("worst relative error 0.00e+00") || text(&c.stdout).contains("e-16"));
+        assert!(
+            c.status.success(),
+            "reference differs from itself on {model}:\n{}",
+            text(&c.stdout)
+        );
+        assert!(
+            text(&c.stdout).contains("worst relative error 0.00e+00")
+                || text(&c.stdout).contains("e-16")
+        );
     }
 }

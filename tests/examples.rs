@@ -18,7 +18,10 @@ fn example(name: &str, model_file: &str) {
     );
     let ours = run(&compile_c(&src, name, Lib::Ours), &args, &[], 120);
     let (r, o) = (text(&reference.stdout), text(&ours.stdout));
-    report(&format!("example-{name}"), &format!("example {name} (ours, exit {:?}):\n{o}", ours.status.code()));
+    report(
+        &format!("example-{name}"),
+        &format!("example {name} (ours, exit {:?}):\n{o}", ours.status.code()),
+    );
     assert!(
         ours.status.success() && r == o,
         "{name}: output with ours (exit status {:?}) differs from the reference.\n--- reference\n{r}--- ours\n{o}{}",

@@ -8,11 +8,22 @@ fn main_job(args: &[&str], expect: &str) {
     let bin = std::path::PathBuf::from(env!("CARGO_BIN_EXE_rujoco"));
     let o = run(&bin, args, &[], 300);
     let out = text(&o.stdout);
-    report(&format!("main-job{}", if args.is_empty() { "" } else { "-model" }), &out);
-    assert!(o.status.success(), "rujoco {args:?} failed (exit {:?}):\n{out}{}", o.status.code(), text(&o.stderr));
+    report(
+        &format!("main-job{}", if args.is_empty() { "" } else { "-model" }),
+        &out,
+    );
+    assert!(
+        o.status.success(),
+        "rujoco {args:?} failed (exit {:?}):\n{out}{}",
+        o.status.code(),
+        text(&o.stderr)
+    );
     let lower = out.to_lowercase();
     for word in [expect, "nq=", "steps/s", "qpos"] {
-        assert!(lower.contains(word), "rujoco {args:?} output lacks \"{word}\":\n{out}");
+        assert!(
+            lower.contains(word),
+            "rujoco {args:?} output lacks \"{word}\":\n{out}"
+        );
     }
 }
 

@@ -15,7 +15,9 @@ pub fn root() -> PathBuf {
 }
 
 pub fn target_dir() -> PathBuf {
-    std::env::var_os("CARGO_TARGET_DIR").map(PathBuf::from).unwrap_or_else(|| root().join("target"))
+    std::env::var_os("CARGO_TARGET_DIR")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| root().join("target"))
 }
 
 /// Directory of our built library (target/release).
@@ -26,7 +28,11 @@ pub fn lib_dir() -> PathBuf {
 /// Our shared library; fails the test when it has not been built.
 pub fn our_lib() -> PathBuf {
     let lib = lib_dir().join("libmujoco.so");
-    assert!(lib.exists(), "{} is missing: run `cargo build --release` first", lib.display());
+    assert!(
+        lib.exists(),
+        "{} is missing: run `cargo build --release` first",
+        lib.display()
+    );
     lib
 }
 
@@ -42,7 +48,10 @@ pub fn require_reference() {
 }
 
 pub fn require_eigen() {
-    assert!(Path::new(EIGEN).exists(), "Eigen missing ({EIGEN}): install libeigen3-dev");
+    assert!(
+        Path::new(EIGEN).exists(),
+        "Eigen missing ({EIGEN}): install libeigen3-dev"
+    );
 }
 
 /// A scratch directory under target/capi-tests.
@@ -72,12 +81,20 @@ impl Lib {
 pub fn compile_c(srcs: &[PathBuf], name: &str, lib: Lib) -> PathBuf {
     let out = work_dir("bin").join(format!("{name}-{}", lib.name()));
     let mut cmd = Command::new("gcc");
-    cmd.args(["-std=c11", "-O2", "-Wall", "-Werror=implicit-function-declaration", "-o"]).arg(&out);
+    cmd.args([
+        "-std=c11",
+        "-O2",
+        "-Wall",
+        "-Werror=implicit-function-declaration",
+        "-o",
+    ])
+    .arg(&out);
     cmd.args(srcs);
     match lib {
         Lib::Ref => {
             require_reference();
-            cmd.arg(REF_LIB).arg("-Wl,--disable-new-dtags,-rpath,/usr/lib/x86_64-linux-gnu");
+            cmd.arg(REF_LIB)
+                .arg("-Wl,--disable-new-dtags,-rpath,/usr/lib/x86_64-linux-gnu");
         }
         Lib::Ours => {
             our_lib();
@@ -88,7 +105,9 @@ pub fn compile_c(srcs: &[PathBuf], name: &str, lib: Lib) -> PathBuf {
         }
     }
     cmd.arg("-lm");
-    let o = cmd.output().expect("gcc not found: install build-essential");
+    let o = cmd
+        .output()
+        .expect("gcc not found: install build-essential");
     assert!(
         o.status.success(),
         "compiling {name} against {} failed:\n{}",
@@ -103,12 +122,16 @@ pub fn compile_c(srcs: &[PathBuf], name: &str, lib: Lib) -> PathBuf {
 pub fn run(prog: &Path, args: &[&str], envs: &[(&str, &str)], seconds: u32) -> Output {
     let mut cmd = Command::new("timeout");
     // a scratch working directory: mju_error writes MUJOCO_LOG.TXT there
-    cmd.arg(seconds.to_string()).arg(prog).args(args).current_dir(work_dir("run"));
+    cmd.arg(seconds.to_string())
+        .arg(prog)
+        .args(args)
+        .current_dir(work_dir("run"));
     cmd.stdin(Stdio::null()).env_remove("LD_LIBRARY_PATH");
     for (k, v) in envs {
         cmd.env(k, v);
     }
-    cmd.output().unwrap_or_else(|e| panic!("cannot run {}: {e}", prog.display()))
+    cmd.output()
+        .unwrap_or_else(|e| panic!("cannot run {}: {e}", prog.display()))
 }
 
 pub fn text(b: &[u8]) -> String {
@@ -133,5 +156,9 @@ pub fn models() -> Vec<String> {
 
 /// A model of models/ as an absolute path.
 pub fn model(name: &str) -> String {
-    root().join("models").join(name).to_string_lossy().into_owned()
+    root()
+        .join("models")
+        .join(name)
+        .to_string_lossy()
+        .into_owned()
 }
