@@ -6,7 +6,6 @@
 mod common;
 use common::*;
 use std::path::{Path, PathBuf};
-use std::process::Command;
 
 fn corpus_dir() -> Option<PathBuf> {
     let candidates = [
@@ -44,18 +43,7 @@ fn corpus_compiled_models() {
         eprintln!("corpus_compiled_models: skipped, no corpus");
         return;
     };
-    require_reference();
-    require_eigen();
-    our_lib();
-    let o = Command::new(root().join("capi-tests/build"))
-        .output()
-        .unwrap();
-    assert!(
-        o.status.success(),
-        "building the harness failed:\n{}",
-        text(&o.stderr)
-    );
-    let bin = PathBuf::from(text(&o.stdout).trim());
+    let bin = harness_bin();
     let mut files = Vec::new();
     xml_files(&corpus, &mut files);
     let base = work_dir("corpus");

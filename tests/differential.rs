@@ -5,25 +5,7 @@
 mod common;
 use common::*;
 use std::path::PathBuf;
-use std::process::Command;
 use std::sync::OnceLock;
-
-/// Harness binaries (built by capi-tests/build).
-fn harness_bin() -> PathBuf {
-    require_reference();
-    require_eigen();
-    our_lib();
-    let o = Command::new(root().join("capi-tests/build"))
-        .output()
-        .expect("bash missing");
-    assert!(
-        o.status.success(),
-        "building the harness failed:\n{}{}",
-        text(&o.stdout),
-        text(&o.stderr)
-    );
-    PathBuf::from(text(&o.stdout).trim())
-}
 
 fn stem(model: &str) -> String {
     PathBuf::from(model)

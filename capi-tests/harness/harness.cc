@@ -37,9 +37,13 @@ namespace {
 std::string g_status;  // status file of the running check group
 
 void write_status(const std::string& path, const std::string& text) {
+  std::string line = text;  // one line: messages may hold newlines
+  for (char& c : line) {
+    if (c == '\n' || c == '\r') c = ' ';
+  }
   FILE* fp = std::fopen(path.c_str(), "w");
   if (fp) {
-    std::fprintf(fp, "%s\n", text.c_str());
+    std::fprintf(fp, "%s\n", line.c_str());
     std::fclose(fp);
   }
 }

@@ -54,6 +54,23 @@ pub fn require_eigen() {
     );
 }
 
+/// The harness binaries (capi-tests/build: harness-ref and harness-ours); returns their directory.
+pub fn harness_bin() -> PathBuf {
+    require_reference();
+    require_eigen();
+    our_lib();
+    let o = Command::new(root().join("capi-tests/build"))
+        .output()
+        .expect("bash missing");
+    assert!(
+        o.status.success(),
+        "building the harness failed:\n{}{}",
+        text(&o.stdout),
+        text(&o.stderr)
+    );
+    PathBuf::from(text(&o.stdout).trim())
+}
+
 /// A scratch directory under target/capi-tests.
 pub fn work_dir(name: &str) -> PathBuf {
     let d = target_dir().join("capi-tests").join(name);
@@ -146,7 +163,12 @@ pub fn report(name: &str, body: &str) {
 
 /// The models of the differential checks (capi-tests/models.list), as absolute paths.
 pub fn models() -> Vec<String> {
-    let list = std::fs::read_to_string(root().join("capi-tests/models.list")).unwrap();
+    model_list("models.list")
+}
+
+/// The models of a list file of capi-tests/, as absolute paths.
+pub fn model_list(file: &str) -> Vec<String> {
+    let list = std::fs::read_to_string(root().join("capi-tests").join(file)).unwrap();
     list.lines()
         .map(str::trim)
         .filter(|l| !l.is_empty() && !l.starts_with('#'))
