@@ -33,14 +33,35 @@ fn callbacks_set() -> Option<&'static str> {
     // SAFETY: plain reads of the callback globals, as the C library does.
     unsafe {
         let set = [
-            (std::ptr::addr_of!(mjcb_passive).read().is_some(), "mjcb_passive"),
-            (std::ptr::addr_of!(mjcb_control).read().is_some(), "mjcb_control"),
-            (std::ptr::addr_of!(mjcb_contactfilter).read().is_some(), "mjcb_contactfilter"),
-            (std::ptr::addr_of!(mjcb_sensor).read().is_some(), "mjcb_sensor"),
+            (
+                std::ptr::addr_of!(mjcb_passive).read().is_some(),
+                "mjcb_passive",
+            ),
+            (
+                std::ptr::addr_of!(mjcb_control).read().is_some(),
+                "mjcb_control",
+            ),
+            (
+                std::ptr::addr_of!(mjcb_contactfilter).read().is_some(),
+                "mjcb_contactfilter",
+            ),
+            (
+                std::ptr::addr_of!(mjcb_sensor).read().is_some(),
+                "mjcb_sensor",
+            ),
             (std::ptr::addr_of!(mjcb_time).read().is_some(), "mjcb_time"),
-            (std::ptr::addr_of!(mjcb_act_dyn).read().is_some(), "mjcb_act_dyn"),
-            (std::ptr::addr_of!(mjcb_act_gain).read().is_some(), "mjcb_act_gain"),
-            (std::ptr::addr_of!(mjcb_act_bias).read().is_some(), "mjcb_act_bias"),
+            (
+                std::ptr::addr_of!(mjcb_act_dyn).read().is_some(),
+                "mjcb_act_dyn",
+            ),
+            (
+                std::ptr::addr_of!(mjcb_act_gain).read().is_some(),
+                "mjcb_act_gain",
+            ),
+            (
+                std::ptr::addr_of!(mjcb_act_bias).read().is_some(),
+                "mjcb_act_bias",
+            ),
         ];
         set.iter().find(|s| s.0).map(|s| s.1)
     }
@@ -60,7 +81,9 @@ unsafe fn run<R>(
     }
     guard(name, fallback, || {
         if let Some(cb) = callbacks_set() {
-            return Err(EngineError(format!("{name}: callbacks ({cb}) are not implemented yet")));
+            return Err(EngineError(format!(
+                "{name}: callbacks ({cb}) are not implemented yet"
+            )));
         }
         let mv = Model::new(&*m);
         let mut dv = Data::new(&*m, &mut *d);
@@ -106,42 +129,83 @@ pipeline! {
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_forwardSkip(m: *const mjModel, d: *mut mjData, skipstage: c_int, skipsensor: c_int) {
-    run("mj_forwardSkip", (), m, d, |m, d| forward::forward_skip(m, d, skipstage, skipsensor != 0))
+pub unsafe extern "C" fn mj_forwardSkip(
+    m: *const mjModel,
+    d: *mut mjData,
+    skipstage: c_int,
+    skipsensor: c_int,
+) {
+    run("mj_forwardSkip", (), m, d, |m, d| {
+        forward::forward_skip(m, d, skipstage, skipsensor != 0)
+    })
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_stepSkip(m: *const mjModel, d: *mut mjData, skipstage: c_int, skipsensor: c_int) {
-    run("mj_stepSkip", (), m, d, |m, d| forward::step_skip(m, d, skipstage, skipsensor != 0))
+pub unsafe extern "C" fn mj_stepSkip(
+    m: *const mjModel,
+    d: *mut mjData,
+    skipstage: c_int,
+    skipsensor: c_int,
+) {
+    run("mj_stepSkip", (), m, d, |m, d| {
+        forward::step_skip(m, d, skipstage, skipsensor != 0)
+    })
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn mj_EulerSkip(m: *const mjModel, d: *mut mjData, skipfactor: c_int) {
-    run("mj_EulerSkip", (), m, d, |m, d| integrate::euler(m, d, skipfactor != 0))
+    run("mj_EulerSkip", (), m, d, |m, d| {
+        integrate::euler(m, d, skipfactor != 0)
+    })
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn mj_RungeKutta(m: *const mjModel, d: *mut mjData, N: c_int) {
-    run("mj_RungeKutta", (), m, d, |m, d| integrate::runge_kutta(m, d, N.max(0) as usize))
+    run("mj_RungeKutta", (), m, d, |m, d| {
+        integrate::runge_kutta(m, d, N.max(0) as usize)
+    })
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_solveM(m: *const mjModel, d: *mut mjData, x: *mut mjtNum, y: *const mjtNum, n: c_int) {
+pub unsafe extern "C" fn mj_solveM(
+    m: *const mjModel,
+    d: *mut mjData,
+    x: *mut mjtNum,
+    y: *const mjtNum,
+    n: c_int,
+) {
     run("mj_solveM", (), m, d, |mv, dv| {
         let len = n.max(0) as usize * mv.raw.nv as usize;
         let x = slice_mut(x, len);
-        let y = if y == x.as_ptr() { None } else { Some(slice(y, len)) };
+        let y = if y == x.as_ptr() {
+            None
+        } else {
+            Some(slice(y, len))
+        };
         inertia::solve_ld(mv, x, y, n.max(0) as usize, dv.qLD, dv.qLDiagInv);
         Ok(())
     })
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_solveM2(m: *const mjModel, d: *mut mjData, x: *mut mjtNum, y: *const mjtNum, n: c_int) {
+pub unsafe extern "C" fn mj_solveM2(
+    m: *const mjModel,
+    d: *mut mjData,
+    x: *mut mjtNum,
+    y: *const mjtNum,
+    n: c_int,
+) {
     run("mj_solveM2", (), m, d, |mv, dv| {
         let len = n.max(0) as usize * mv.raw.nv as usize;
         let tmp: Vec<f64> = slice(y, len).to_vec();
-        inertia::solve_m2(mv, slice_mut(x, len), &tmp, n.max(0) as usize, dv.qLD, dv.qLDiagSqrtInv);
+        inertia::solve_m2(
+            mv,
+            slice_mut(x, len),
+            &tmp,
+            n.max(0) as usize,
+            dv.qLD,
+            dv.qLDiagSqrtInv,
+        );
         Ok(())
     })
 }
@@ -159,7 +223,11 @@ pub unsafe extern "C" fn mj_solveLD(
         let mv = Model::new(&*m);
         let len = n.max(0) as usize * mv.raw.nv as usize;
         let x = slice_mut(x, len);
-        let y = if y == x.as_ptr() { None } else { Some(slice(y, len)) };
+        let y = if y == x.as_ptr() {
+            None
+        } else {
+            Some(slice(y, len))
+        };
         let qld = slice(qLD, mv.raw.nM as usize);
         let dinv = slice(qLDiagInv, mv.raw.nv as usize);
         inertia::solve_ld(&mv, x, y, n.max(0) as usize, qld, dinv);
@@ -179,13 +247,29 @@ pub unsafe extern "C" fn mj_factorI(
     run("mj_factorI", (), m, d, |mv, dv| {
         let (nm, nv) = (mv.raw.nM as usize, mv.raw.nv as usize);
         let mat: Vec<f64> = slice(M, nm).to_vec();
-        let sqrt_inv = if qLDiagSqrtInv.is_null() { None } else { Some(slice_mut(qLDiagSqrtInv, nv)) };
-        inertia::factor_i(mv, dv.raw, &mat, slice_mut(qLD, nm), slice_mut(qLDiagInv, nv), sqrt_inv)
+        let sqrt_inv = if qLDiagSqrtInv.is_null() {
+            None
+        } else {
+            Some(slice_mut(qLDiagSqrtInv, nv))
+        };
+        inertia::factor_i(
+            mv,
+            dv.raw,
+            &mat,
+            slice_mut(qLD, nm),
+            slice_mut(qLDiagInv, nv),
+            sqrt_inv,
+        )
     })
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_rne(m: *const mjModel, d: *mut mjData, flg_acc: c_int, result: *mut mjtNum) {
+pub unsafe extern "C" fn mj_rne(
+    m: *const mjModel,
+    d: *mut mjData,
+    flg_acc: c_int,
+    result: *mut mjtNum,
+) {
     run("mj_rne", (), m, d, |mv, dv| {
         let nv = mv.raw.nv as usize;
         let mut out = vec![0.0; nv];
@@ -197,7 +281,14 @@ pub unsafe extern "C" fn mj_rne(m: *const mjModel, d: *mut mjData, flg_acc: c_in
 }
 
 /// Jacobian rows at `point` on `body`, from the raw data (the C signature has a const mjData).
-unsafe fn jac_raw(m: *const mjModel, d: *const mjData, jacp: *mut f64, jacr: *mut f64, point: [f64; 3], body: c_int) {
+unsafe fn jac_raw(
+    m: *const mjModel,
+    d: *const mjData,
+    jacp: *mut f64,
+    jacr: *mut f64,
+    point: [f64; 3],
+    body: c_int,
+) {
     guard("mj_jac", (), || {
         let mv = Model::new(&*m);
         let (nv, nbody) = (mv.raw.nv as usize, mv.raw.nbody as usize);
@@ -226,29 +317,86 @@ pub unsafe extern "C" fn mj_jac(
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_jacBody(m: *const mjModel, d: *const mjData, jacp: *mut mjtNum, jacr: *mut mjtNum, body: c_int) {
-    jac_raw(m, d, jacp, jacr, arr3((*d).xpos.add(3 * body.max(0) as usize)), body)
+pub unsafe extern "C" fn mj_jacBody(
+    m: *const mjModel,
+    d: *const mjData,
+    jacp: *mut mjtNum,
+    jacr: *mut mjtNum,
+    body: c_int,
+) {
+    jac_raw(
+        m,
+        d,
+        jacp,
+        jacr,
+        arr3((*d).xpos.add(3 * body.max(0) as usize)),
+        body,
+    )
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_jacBodyCom(m: *const mjModel, d: *const mjData, jacp: *mut mjtNum, jacr: *mut mjtNum, body: c_int) {
-    jac_raw(m, d, jacp, jacr, arr3((*d).xipos.add(3 * body.max(0) as usize)), body)
+pub unsafe extern "C" fn mj_jacBodyCom(
+    m: *const mjModel,
+    d: *const mjData,
+    jacp: *mut mjtNum,
+    jacr: *mut mjtNum,
+    body: c_int,
+) {
+    jac_raw(
+        m,
+        d,
+        jacp,
+        jacr,
+        arr3((*d).xipos.add(3 * body.max(0) as usize)),
+        body,
+    )
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_jacGeom(m: *const mjModel, d: *const mjData, jacp: *mut mjtNum, jacr: *mut mjtNum, geom: c_int) {
+pub unsafe extern "C" fn mj_jacGeom(
+    m: *const mjModel,
+    d: *const mjData,
+    jacp: *mut mjtNum,
+    jacr: *mut mjtNum,
+    geom: c_int,
+) {
     let g = geom.max(0) as usize;
-    jac_raw(m, d, jacp, jacr, arr3((*d).geom_xpos.add(3 * g)), *(*m).geom_bodyid.add(g))
+    jac_raw(
+        m,
+        d,
+        jacp,
+        jacr,
+        arr3((*d).geom_xpos.add(3 * g)),
+        *(*m).geom_bodyid.add(g),
+    )
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_jacSite(m: *const mjModel, d: *const mjData, jacp: *mut mjtNum, jacr: *mut mjtNum, site: c_int) {
+pub unsafe extern "C" fn mj_jacSite(
+    m: *const mjModel,
+    d: *const mjData,
+    jacp: *mut mjtNum,
+    jacr: *mut mjtNum,
+    site: c_int,
+) {
     let s = site.max(0) as usize;
-    jac_raw(m, d, jacp, jacr, arr3((*d).site_xpos.add(3 * s)), *(*m).site_bodyid.add(s))
+    jac_raw(
+        m,
+        d,
+        jacp,
+        jacr,
+        arr3((*d).site_xpos.add(3 * s)),
+        *(*m).site_bodyid.add(s),
+    )
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_jacSubtreeCom(m: *const mjModel, d: *mut mjData, jacp: *mut mjtNum, body: c_int) {
+pub unsafe extern "C" fn mj_jacSubtreeCom(
+    m: *const mjModel,
+    d: *mut mjData,
+    jacp: *mut mjtNum,
+    body: c_int,
+) {
     run("mj_jacSubtreeCom", (), m, d, |mv, dv| {
         let nv = mv.raw.nv as usize;
         let mut out = vec![0.0; 3 * nv];
@@ -288,18 +436,33 @@ pub unsafe extern "C" fn mj_fullM(m: *const mjModel, dst: *mut mjtNum, M: *const
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_mulM(m: *const mjModel, d: *const mjData, res: *mut mjtNum, vec: *const mjtNum) {
+pub unsafe extern "C" fn mj_mulM(
+    m: *const mjModel,
+    d: *const mjData,
+    res: *mut mjtNum,
+    vec: *const mjtNum,
+) {
     guard("mj_mulM", (), || {
         let mv = Model::new(&*m);
         let nv = mv.raw.nv as usize;
         let v: Vec<f64> = slice(vec, nv).to_vec();
-        jacobian::mul_m(&mv, slice((*d).qM, mv.raw.nM as usize), slice_mut(res, nv), &v);
+        jacobian::mul_m(
+            &mv,
+            slice((*d).qM, mv.raw.nM as usize),
+            slice_mut(res, nv),
+            &v,
+        );
         Ok(())
     })
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_mulM2(m: *const mjModel, d: *const mjData, res: *mut mjtNum, vec: *const mjtNum) {
+pub unsafe extern "C" fn mj_mulM2(
+    m: *const mjModel,
+    d: *const mjData,
+    res: *mut mjtNum,
+    vec: *const mjtNum,
+) {
     guard("mj_mulM2", (), || {
         let mv = Model::new(&*m);
         let nv = mv.raw.nv as usize;
@@ -322,7 +485,9 @@ pub unsafe extern "C" fn mj_addM(
 ) {
     run("mj_addM", (), m, d, |mv, dv| {
         if !rownnz.is_null() && !rowadr.is_null() && !colind.is_null() {
-            return Err(engine::not_implemented("mj_addM with a sparse destination is"));
+            return Err(engine::not_implemented(
+                "mj_addM with a sparse destination is",
+            ));
         }
         let nv = mv.raw.nv as usize;
         jacobian::add_m_dense(mv, dv.qM, slice_mut(dst, nv * nv));
@@ -346,7 +511,15 @@ pub unsafe extern "C" fn mj_applyFT(
     run("mj_applyFT", (), m, d, |mv, dv| {
         let nv = mv.raw.nv as usize;
         let mut q: Vec<f64> = slice(qfrc_target, nv).to_vec();
-        forward::apply_ft(mv, dv, f.as_ref(), t.as_ref(), &p, body.max(0) as usize, &mut q)?;
+        forward::apply_ft(
+            mv,
+            dv,
+            f.as_ref(),
+            t.as_ref(),
+            &p,
+            body.max(0) as usize,
+            &mut q,
+        )?;
         slice_mut(qfrc_target, nv).copy_from_slice(&q);
         Ok(())
     })
@@ -370,7 +543,11 @@ pub unsafe extern "C" fn mj_name2id(m: *const mjModel, type_: c_int, name: *cons
     }
     guard("mj_name2id", -1, || {
         let mv = Model::new(&*m);
-        Ok(support::name2id(&mv, type_, std::ffi::CStr::from_ptr(name).to_bytes()))
+        Ok(support::name2id(
+            &mv,
+            type_,
+            std::ffi::CStr::from_ptr(name).to_bytes(),
+        ))
     })
 }
 
@@ -406,7 +583,12 @@ pub unsafe extern "C" fn mj_differentiatePos(
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_integratePos(m: *const mjModel, qpos: *mut mjtNum, qvel: *const mjtNum, dt: mjtNum) {
+pub unsafe extern "C" fn mj_integratePos(
+    m: *const mjModel,
+    qpos: *mut mjtNum,
+    qvel: *const mjtNum,
+    dt: mjtNum,
+) {
     guard("mj_integratePos", (), || {
         let mv = Model::new(&*m);
         let (nq, nv) = (mv.raw.nq as usize, mv.raw.nv as usize);
@@ -443,8 +625,16 @@ pub unsafe extern "C" fn mj_local2Global(
             let bx = arr3(d.xpos.add(3 * b));
             let bm: Mat3 = arr(slice(d.xmat.add(9 * b), 9));
             let bq: Quat = arr(slice(d.xquat.add(4 * b), 4));
-            let p = if pos.is_null() { [0.0; 3] } else { add3(&mul_mat_vec3(&bm, &arr3(pos)), &bx) };
-            let r = if quat.is_null() { [0.0; 9] } else { quat2mat(&mul_quat(&bq, &arr(slice(quat, 4)))) };
+            let p = if pos.is_null() {
+                [0.0; 3]
+            } else {
+                add3(&mul_mat_vec3(&bm, &arr3(pos)), &bx)
+            };
+            let r = if quat.is_null() {
+                [0.0; 9]
+            } else {
+                quat2mat(&mul_quat(&bq, &arr(slice(quat, 4))))
+            };
             (p, r)
         }
         1 => (arr3(d.xpos.add(3 * b)), arr(slice(d.xmat.add(9 * b), 9))),
@@ -460,7 +650,9 @@ pub unsafe extern "C" fn mj_local2Global(
 
 #[no_mangle]
 pub unsafe extern "C" fn mj_getTotalmass(m: *const mjModel) -> mjtNum {
-    guard("mj_getTotalmass", 0.0, || Ok(support::total_mass(&Model::new(&*m))))
+    guard("mj_getTotalmass", 0.0, || {
+        Ok(support::total_mass(&Model::new(&*m)))
+    })
 }
 
 #[no_mangle]
@@ -474,7 +666,9 @@ pub unsafe extern "C" fn mj_setTotalmass(m: *mut mjModel, newmass: mjtNum) {
 
 #[no_mangle]
 pub unsafe extern "C" fn mj_warning(d: *mut mjData, warning: c_int, info: c_int) {
-    guard("mj_warning", (), || support::warning(&mut *d, warning, info))
+    guard("mj_warning", (), || {
+        support::warning(&mut *d, warning, info)
+    })
 }
 
 #[no_mangle]

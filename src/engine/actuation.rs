@@ -16,14 +16,20 @@ pub fn fwd_actuation(m: &Model, d: &mut Data) -> Result<(), EngineError> {
         return Ok(());
     }
     if na > 0 {
-        return Err(not_implemented("actuator dynamics (stateful actuators) are"));
+        return Err(not_implemented(
+            "actuator dynamics (stateful actuators) are",
+        ));
     }
     d.arena.scope(|a| -> Result<(), EngineError> {
         let ctrl = a.alloc(nu)?;
         let noclamp = disabled(m, mjtDisableBit_::mjDSBL_CLAMPCTRL);
         for i in 0..nu {
             ctrl[i] = if !noclamp && m.actuator_ctrllimited()[i] != 0 {
-                clip(d.ctrl[i], m.actuator_ctrlrange()[2 * i], m.actuator_ctrlrange()[2 * i + 1])
+                clip(
+                    d.ctrl[i],
+                    m.actuator_ctrlrange()[2 * i],
+                    m.actuator_ctrlrange()[2 * i + 1],
+                )
             } else {
                 d.ctrl[i]
             };
@@ -59,7 +65,11 @@ pub fn fwd_actuation(m: &Model, d: &mut Data) -> Result<(), EngineError> {
         }
         for i in 0..nu {
             if m.actuator_forcelimited()[i] != 0 {
-                force[i] = clip(force[i], m.actuator_forcerange()[2 * i], m.actuator_forcerange()[2 * i + 1]);
+                force[i] = clip(
+                    force[i],
+                    m.actuator_forcerange()[2 * i],
+                    m.actuator_forcerange()[2 * i + 1],
+                );
             }
         }
         mul_mat_t_vec(d.qfrc_actuator, d.actuator_moment, force, nu, nv);

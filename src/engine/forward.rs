@@ -82,7 +82,15 @@ pub fn apply_ft(
         let jacp = a.alloc(3 * nv)?;
         let jacr = a.alloc(3 * nv)?;
         let qforce = a.alloc(nv)?;
-        jac(m, d.cdof, d.subtree_com, point, body, Some(&mut *jacp), Some(&mut *jacr));
+        jac(
+            m,
+            d.cdof,
+            d.subtree_com,
+            point,
+            body,
+            Some(&mut *jacp),
+            Some(&mut *jacr),
+        );
         if let Some(f) = force {
             mul_mat_t_vec(qforce, jacp, f, 3, nv);
             add_to(&mut qfrc[..nv], qforce);
@@ -101,7 +109,15 @@ pub fn xfrc_accumulate(m: &Model, d: &mut Data, qfrc: &mut [f64]) -> Result<(), 
         let x = row::<6>(d.xfrc_applied, i);
         if x.iter().any(|&v| v != 0.0) {
             let point = row::<3>(d.xipos, i);
-            apply_ft(m, d, Some(&[x[0], x[1], x[2]]), Some(&[x[3], x[4], x[5]]), &point, i, qfrc)?;
+            apply_ft(
+                m,
+                d,
+                Some(&[x[0], x[1], x[2]]),
+                Some(&[x[3], x[4], x[5]]),
+                &point,
+                i,
+                qfrc,
+            )?;
         }
     }
     Ok(())
@@ -172,7 +188,12 @@ fn bad_state(m: &Model, d: &mut Data, kind: mjtWarning_, i: usize) -> Result<(),
 }
 
 /// Forward dynamics, skipping stages up to `skipstage` (mj_forwardSkip).
-pub fn forward_skip(m: &Model, d: &mut Data, skipstage: i32, skipsensor: bool) -> Result<(), EngineError> {
+pub fn forward_skip(
+    m: &Model,
+    d: &mut Data,
+    skipstage: i32,
+    skipsensor: bool,
+) -> Result<(), EngineError> {
     let energy = enabled(m, mjtEnableBit_::mjENBL_ENERGY);
     if skipstage < mjtStage_::mjSTAGE_POS as i32 {
         fwd_position(m, d)?;
@@ -220,16 +241,25 @@ pub fn step(m: &Model, d: &mut Data) -> Result<(), EngineError> {
 }
 
 /// mj_step reusing stages up to `skipstage` (mj_stepSkip).
-pub fn step_skip(m: &Model, d: &mut Data, skipstage: i32, skipsensor: bool) -> Result<(), EngineError> {
+pub fn step_skip(
+    m: &Model,
+    d: &mut Data,
+    skipstage: i32,
+    skipsensor: bool,
+) -> Result<(), EngineError> {
     check_pos(m, d)?;
     check_vel(m, d)?;
     forward_skip(m, d, skipstage, skipsensor)?;
     check_acc(m, d)?;
     check_fwdinv(m)?;
     match m.raw.opt.integrator {
-        x if x == mjtIntegrator_::mjINT_EULER as i32 => euler(m, d, skipstage >= mjtStage_::mjSTAGE_POS as i32)?,
+        x if x == mjtIntegrator_::mjINT_EULER as i32 => {
+            euler(m, d, skipstage >= mjtStage_::mjSTAGE_POS as i32)?
+        }
         x if x == mjtIntegrator_::mjINT_RK4 as i32 => runge_kutta(m, d, 4)?,
-        x if x == mjtIntegrator_::mjINT_IMPLICIT as i32 => return Err(not_implemented("the implicit integrator is")),
+        x if x == mjtIntegrator_::mjINT_IMPLICIT as i32 => {
+            return Err(not_implemented("the implicit integrator is"))
+        }
         _ => return Err(EngineError("Invalid integrator".into())),
     }
     tick(d, mjTIMER_STEP);

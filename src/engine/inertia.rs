@@ -127,7 +127,14 @@ fn solve_ld1(m: &Model, x: &mut [f64], qld: &[f64], diag_inv: &[f64]) {
 }
 
 /// x = inv(L'*D*L) * y for `n` vectors of length nv (mj_solveLD); x and y may be the same.
-pub fn solve_ld(m: &Model, x: &mut [f64], y: Option<&[f64]>, n: usize, qld: &[f64], diag_inv: &[f64]) {
+pub fn solve_ld(
+    m: &Model,
+    x: &mut [f64],
+    y: Option<&[f64]>,
+    n: usize,
+    qld: &[f64],
+    diag_inv: &[f64],
+) {
     let nv = m.raw.nv as usize;
     if let Some(y) = y {
         x[..n * nv].copy_from_slice(&y[..n * nv]);

@@ -50,7 +50,12 @@ pub fn jac(
 }
 
 /// Jacobian of the subtree center of mass of `body` (mj_jacSubtreeCom).
-pub fn jac_subtree_com(m: &Model, d: &mut Data, jacp: &mut [f64], body: usize) -> Result<(), EngineError> {
+pub fn jac_subtree_com(
+    m: &Model,
+    d: &mut Data,
+    jacp: &mut [f64],
+    body: usize,
+) -> Result<(), EngineError> {
     let nv = m.raw.nv as usize;
     let nbody = m.raw.nbody as usize;
     jacp[..3 * nv].fill(0.0);
@@ -60,7 +65,15 @@ pub fn jac_subtree_com(m: &Model, d: &mut Data, jacp: &mut [f64], body: usize) -
             if b > body && (m.body_parentid()[b] as usize) < body {
                 break;
             }
-            jac(m, d.cdof, d.subtree_com, &row(d.xipos, b), b, Some(&mut *jb), None);
+            jac(
+                m,
+                d.cdof,
+                d.subtree_com,
+                &row(d.xipos, b),
+                b,
+                Some(&mut *jb),
+                None,
+            );
             add_to_scl(&mut jacp[..3 * nv], jb, m.body_mass()[b]);
         }
         Ok(())
@@ -86,10 +99,26 @@ pub fn jac_point_axis(
     d.arena.scope(|a| -> Result<(), EngineError> {
         let jacr = a.alloc(3 * nv)?;
         match jac_point {
-            Some(p) => jac(m, d.cdof, d.subtree_com, point, body, Some(p), Some(&mut *jacr)),
+            Some(p) => jac(
+                m,
+                d.cdof,
+                d.subtree_com,
+                point,
+                body,
+                Some(p),
+                Some(&mut *jacr),
+            ),
             None => {
                 let p = a.alloc(3 * nv)?;
-                jac(m, d.cdof, d.subtree_com, point, body, Some(p), Some(&mut *jacr))
+                jac(
+                    m,
+                    d.cdof,
+                    d.subtree_com,
+                    point,
+                    body,
+                    Some(p),
+                    Some(&mut *jacr),
+                )
             }
         }
         if let Some(ja) = jac_axis {

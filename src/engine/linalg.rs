@@ -72,7 +72,7 @@ pub fn mul_mat_mat_t(res: &mut [f64], mat1: &[f64], mat2: &[f64], r1: usize, c1:
 /// NaN or beyond +-1e10.
 #[inline]
 pub fn is_bad(x: f64) -> bool {
-    x.is_nan() || x > super::MAXVAL || x < -super::MAXVAL
+    x.is_nan() || !(-super::MAXVAL..=super::MAXVAL).contains(&x)
 }
 
 /// Clamp as mju_clip does (NaN passes through).

@@ -1,5 +1,7 @@
 //! The simulation pipeline, one module per stage of MuJoCo's computation chapter.
 
+#![allow(clippy::needless_range_loop)] // index loops mirror the reference algorithms
+
 pub mod actuation;
 pub mod collision;
 pub mod constraint;

@@ -6,7 +6,12 @@ use crate::abi::mjtDisableBit_;
 use crate::math::*;
 
 /// result = M(qpos)*qacc + C(qpos,qvel); without the inertial term when `qacc` is None (mj_rne).
-pub fn rne_with(m: &Model, d: &mut Data, qacc: Option<&[f64]>, result: &mut [f64]) -> Result<(), EngineError> {
+pub fn rne_with(
+    m: &Model,
+    d: &mut Data,
+    qacc: Option<&[f64]>,
+    result: &mut [f64],
+) -> Result<(), EngineError> {
     let nbody = m.raw.nbody as usize;
     let nv = m.raw.nv as usize;
     d.arena.scope(|a| -> Result<(), EngineError> {
@@ -14,9 +19,9 @@ pub fn rne_with(m: &Model, d: &mut Data, qacc: Option<&[f64]>, result: &mut [f64
         let cfrc = a.alloc(6 * nbody)?;
         if !disabled(m, mjtDisableBit_::mjDSBL_GRAVITY) {
             let g = m.raw.opt.gravity;
-            cacc[3] = g[0] * -1.0;
-            cacc[4] = g[1] * -1.0;
-            cacc[5] = g[2] * -1.0;
+            cacc[3] = -g[0];
+            cacc[4] = -g[1];
+            cacc[5] = -g[2];
         }
         for i in 1..nbody {
             let bda = m.body_dofadr()[i].max(0) as usize;

@@ -1,13 +1,21 @@
 //! Frames, names, masses, warnings, energy and data reset.
 
 use super::linalg::{dot, put, row};
-use super::{disabled, enabled, Data, EngineError, Model, JNT_BALL, JNT_FREE, JNT_HINGE, JNT_SLIDE};
+use super::{
+    disabled, enabled, Data, EngineError, Model, JNT_BALL, JNT_FREE, JNT_HINGE, JNT_SLIDE,
+};
 use crate::abi::*;
 use crate::math::*;
 
 /// Global pose of a frame given relative to `body` (mj_local2Global); `sameframe` 1 copies
 /// the body frame, 2 the inertial frame.
-pub fn local_to_global(d: &Data, pos: &Vec3, quat: &Quat, body: usize, sameframe: u8) -> (Vec3, Mat3) {
+pub fn local_to_global(
+    d: &Data,
+    pos: &Vec3,
+    quat: &Quat,
+    body: usize,
+    sameframe: u8,
+) -> (Vec3, Mat3) {
     match sameframe {
         0 => {
             let p = add3(&mul_mat_vec3(&row(d.xmat, body), pos), &row(d.xpos, body));
@@ -29,7 +37,9 @@ pub fn warning_text(kind: i32, info: i32) -> String {
         4 => format!("Nan, Inf or huge value in QPOS at DOF {info}. The simulation is unstable."),
         5 => format!("Nan, Inf or huge value in QVEL at DOF {info}. The simulation is unstable."),
         6 => format!("Nan, Inf or huge value in QACC at DOF {info}. The simulation is unstable."),
-        7 => format!("Nan, Inf or huge value in CTRL at ACTUATOR {info}. The simulation is unstable."),
+        7 => format!(
+            "Nan, Inf or huge value in CTRL at ACTUATOR {info}. The simulation is unstable."
+        ),
         _ => format!("Unknown warning type {kind}."),
     }
 }
@@ -230,7 +240,10 @@ pub fn set_total_mass(body_mass: &mut [f64], body_inertia: &mut [f64], newmass: 
     for &b in &body_mass[1..] {
         total += b;
     }
-    let scale = super::linalg::max(super::MINVAL, newmass / super::linalg::max(super::MINVAL, total));
+    let scale = super::linalg::max(
+        super::MINVAL,
+        newmass / super::linalg::max(super::MINVAL, total),
+    );
     for i in 1..body_mass.len() {
         body_mass[i] *= scale;
         body_inertia[3 * i] *= scale;

@@ -18,7 +18,9 @@ pub fn transmission(m: &Model, d: &mut Data) -> Result<(), EngineError> {
         let trn = m.actuator_trntype()[i];
         let inparent = trn == mjtTrn_::mjTRN_JOINTINPARENT as i32;
         if trn != mjtTrn_::mjTRN_JOINT as i32 && !inparent {
-            return Err(not_implemented(&format!("actuator transmission type {trn} is")));
+            return Err(not_implemented(&format!(
+                "actuator transmission type {trn} is"
+            )));
         }
         let moment = &mut d.actuator_moment[i * nv..(i + 1) * nv];
         let qadr = m.jnt_qposadr()[id] as usize;
@@ -32,7 +34,11 @@ pub fn transmission(m: &Model, d: &mut Data) -> Result<(), EngineError> {
                 let q = q4(&d.qpos[qadr..]);
                 let axis = quat2vel(&q, 1.0);
                 let g = v3(gear);
-                let gear_axis = if inparent { rot_vec_quat(&g, &neg_quat(&q)) } else { g };
+                let gear_axis = if inparent {
+                    rot_vec_quat(&g, &neg_quat(&q))
+                } else {
+                    g
+                };
                 d.actuator_length[i] = dot3(&axis, &gear_axis);
                 moment[dadr..dadr + 3].copy_from_slice(&gear_axis);
             }
@@ -40,7 +46,11 @@ pub fn transmission(m: &Model, d: &mut Data) -> Result<(), EngineError> {
                 d.actuator_length[i] = 0.0;
                 let q = q4(&d.qpos[qadr + 3..]);
                 let g = v3(&gear[3..]);
-                let gear_axis = if inparent { rot_vec_quat(&g, &neg_quat(&q)) } else { g };
+                let gear_axis = if inparent {
+                    rot_vec_quat(&g, &neg_quat(&q))
+                } else {
+                    g
+                };
                 moment[dadr..dadr + 3].copy_from_slice(&gear[..3]);
                 moment[dadr + 3..dadr + 6].copy_from_slice(&gear_axis);
             }
