@@ -27,23 +27,6 @@ pub fn local_to_global(
     }
 }
 
-/// Text of warning `kind` (mju_warningText).
-pub fn warning_text(kind: i32, info: i32) -> String {
-    match kind {
-        0 => format!("Inertia matrix is too close to singular at DOF {info}. Check model."),
-        1 => format!("Pre-allocated contact buffer is full. Increase nconmax above {info}."),
-        2 => format!("Pre-allocated constraint buffer is full. Increase njmax above {info}."),
-        3 => format!("Pre-allocated visual geom buffer is full. Increase maxgeom above {info}."),
-        4 => format!("Nan, Inf or huge value in QPOS at DOF {info}. The simulation is unstable."),
-        5 => format!("Nan, Inf or huge value in QVEL at DOF {info}. The simulation is unstable."),
-        6 => format!("Nan, Inf or huge value in QACC at DOF {info}. The simulation is unstable."),
-        7 => format!(
-            "Nan, Inf or huge value in CTRL at ACTUATOR {info}. The simulation is unstable."
-        ),
-        _ => format!("Unknown warning type {kind}."),
-    }
-}
-
 /// Counts a warning; reports it through mju_warning the first time (mj_warning).
 pub fn warning(d: &mut mjData, kind: i32, info: i32) -> Result<(), EngineError> {
     if !(0..mjtWarning_::mjNWARNING as i32).contains(&kind) {
@@ -52,7 +35,7 @@ pub fn warning(d: &mut mjData, kind: i32, info: i32) -> Result<(), EngineError> 
     let w = &mut d.warning[kind as usize];
     w.lastinfo = info;
     if w.number == 0 {
-        let text = format!("{} Time = {:.4}.", warning_text(kind, info), d.time);
+        let text = format!("{} Time = {:.4}.", crate::math::misc::warning_text(kind, info), d.time);
         crate::capi::errmem::warning(&text);
     }
     d.warning[kind as usize].number += 1;
