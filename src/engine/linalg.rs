@@ -9,6 +9,14 @@ pub fn dot(a: &[f64], b: &[f64]) -> f64 {
     crate::math::blas::dot(a, b, a.len().min(b.len()))
 }
 
+/// Dot product of 6-vectors, bit-identical to `dot` with n = 6 (zero-started partial sums kept).
+#[inline(always)]
+pub fn dot6(a: &[f64], b: &[f64]) -> f64 {
+    let (a, b) = (&a[..6], &b[..6]);
+    let s = ((0.0 + a[0] * b[0]) + (0.0 + a[2] * b[2])) + ((0.0 + a[1] * b[1]) + (0.0 + a[3] * b[3]));
+    s + (a[4] * b[4] + a[5] * b[5])
+}
+
 /// Writes the `N` values of `v` at row `i` of a flat array of `N`-rows.
 #[inline]
 pub fn put<const N: usize>(dst: &mut [f64], i: usize, v: &[f64; N]) {

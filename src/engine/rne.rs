@@ -1,6 +1,6 @@
 //! Recursive Newton-Euler: bias forces (gravity, Coriolis, centrifugal) and M*qacc.
 
-use super::linalg::{dot, row};
+use super::linalg::{dot6, row};
 use super::{disabled, Data, EngineError, Model};
 use crate::abi::mjtDisableBit_;
 use crate::math::*;
@@ -57,7 +57,7 @@ pub fn rne_with(
         }
         for i in 0..nv {
             let b = m.dof_bodyid()[i] as usize;
-            result[i] = dot(&d.cdof[6 * i..6 * i + 6], &cfrc[6 * b..6 * b + 6]);
+            result[i] = dot6(&d.cdof[6 * i..6 * i + 6], &cfrc[6 * b..6 * b + 6]);
         }
         Ok(())
     })
