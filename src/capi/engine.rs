@@ -484,12 +484,19 @@ pub unsafe extern "C" fn mj_addM(
     colind: *mut c_int,
 ) {
     run("mj_addM", (), m, d, |mv, dv| {
-        if !rownnz.is_null() && !rowadr.is_null() && !colind.is_null() {
-            return Err(engine::not_implemented(
-                "mj_addM with a sparse destination is",
-            ));
-        }
         let nv = mv.raw.nv as usize;
+        if !rownnz.is_null() && !rowadr.is_null() && !colind.is_null() {
+            let rownnz = std::slice::from_raw_parts_mut(rownnz, nv);
+            let rowadr = std::slice::from_raw_parts(rowadr as *const c_int, nv);
+            // uncompressed rows: each may grow to nv entries
+            let len = rowadr
+                .iter()
+                .map(|&a| a.max(0) as usize + nv)
+                .max()
+                .unwrap_or(0);
+            let colind = std::slice::from_raw_parts_mut(colind, len);
+            return jacobian::add_m_sparse(mv, dv, slice_mut(dst, len), rownnz, rowadr, colind);
+        }
         jacobian::add_m_dense(mv, dv.qM, slice_mut(dst, nv * nv));
         Ok(())
     })

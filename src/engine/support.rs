@@ -35,7 +35,11 @@ pub fn warning(d: &mut mjData, kind: i32, info: i32) -> Result<(), EngineError> 
     let w = &mut d.warning[kind as usize];
     w.lastinfo = info;
     if w.number == 0 {
-        let text = format!("{} Time = {:.4}.", crate::math::misc::warning_text(kind, info), d.time);
+        let text = format!(
+            "{} Time = {:.4}.",
+            crate::math::misc::warning_text(kind, info),
+            d.time
+        );
         crate::capi::errmem::warning(&text);
     }
     d.warning[kind as usize].number += 1;
