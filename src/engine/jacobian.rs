@@ -225,7 +225,6 @@ fn combine_sparse(
     src_ind: &[i32],
     buf: &mut [f64],
     buf_ind: &mut [i32],
-    n: usize,
 ) -> usize {
     if dst_nnz == src.len() && dst_ind[..dst_nnz] == *src_ind {
         for (x, y) in dst[..dst_nnz].iter_mut().zip(src) {
@@ -235,7 +234,7 @@ fn combine_sparse(
     }
     buf[..dst_nnz].copy_from_slice(&dst[..dst_nnz]);
     buf_ind[..dst_nnz].copy_from_slice(&dst_ind[..dst_nnz]);
-    let end = n as i32 + 1;
+    let end = i32::MAX; // past every column index, as n + 1 is in 2.2.2
     let (mut bi, mut si, mut nnz) = (0, 0, 0);
     let at = |ind: &[i32], k: usize, len: usize| if k < len { ind[k] } else { end };
     let (mut badr, mut sadr) = (at(buf_ind, 0, dst_nnz), at(src_ind, 0, src.len()));
@@ -354,7 +353,6 @@ pub fn add_m_sparse(
                 &mcol[i * nv..i * nv + cnt],
                 buf,
                 buf_ind,
-                nv,
             ) as i32;
         }
         Ok(())
