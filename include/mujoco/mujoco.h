@@ -40,6 +40,56 @@ extern mjfAct mjcb_act_bias;
 
 extern mjfCollision mjCOLLISIONFUNC[8][8];
 
+void mj_step(const mjModel *m, mjData *d);
+
+void mj_step1(const mjModel *m, mjData *d);
+
+void mj_step2(const mjModel *m, mjData *d);
+
+void mj_forward(const mjModel *m, mjData *d);
+
+void mj_fwdPosition(const mjModel *m, mjData *d);
+
+void mj_fwdVelocity(const mjModel *m, mjData *d);
+
+void mj_fwdActuation(const mjModel *m, mjData *d);
+
+void mj_fwdAcceleration(const mjModel *m, mjData *d);
+
+void mj_fwdConstraint(const mjModel *m, mjData *d);
+
+void mj_Euler(const mjModel *m, mjData *d);
+
+void mj_kinematics(const mjModel *m, mjData *d);
+
+void mj_comPos(const mjModel *m, mjData *d);
+
+void mj_camlight(const mjModel *m, mjData *d);
+
+void mj_tendon(const mjModel *m, mjData *d);
+
+void mj_transmission(const mjModel *m, mjData *d);
+
+void mj_crb(const mjModel *m, mjData *d);
+
+void mj_factorM(const mjModel *m, mjData *d);
+
+void mj_comVel(const mjModel *m, mjData *d);
+
+void mj_passive(const mjModel *m, mjData *d);
+
+void mj_checkPos(const mjModel *m, mjData *d);
+
+void mj_checkVel(const mjModel *m, mjData *d);
+
+void mj_checkAcc(const mjModel *m, mjData *d);
+
+void mj_energyPos(const mjModel *m, mjData *d);
+
+void mj_energyVel(const mjModel *m, mjData *d);
+
+void mj_collision(const mjModel *m, mjData *d);
+
 void mj_forwardSkip(const mjModel *m, mjData *d, int skipstage, int skipsensor);
 
 void mj_stepSkip(const mjModel *m, mjData *d, int skipstage, int skipsensor);

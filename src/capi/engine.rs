@@ -91,41 +91,153 @@ unsafe fn run<R>(
     })
 }
 
-macro_rules! pipeline {
-    ($($cname:ident => $f:expr;)*) => {$(
-        #[no_mangle]
-        pub unsafe extern "C" fn $cname(m: *const mjModel, d: *mut mjData) {
-            run(stringify!($cname), (), m, d, $f)
-        }
-    )*};
+#[no_mangle]
+pub unsafe extern "C" fn mj_step(m: *const mjModel, d: *mut mjData) {
+    run("mj_step", (), m, d, forward::step)
 }
 
-pipeline! {
-    mj_step => forward::step;
-    mj_step1 => forward::step1;
-    mj_step2 => forward::step2;
-    mj_forward => forward::forward;
-    mj_fwdPosition => forward::fwd_position;
-    mj_fwdVelocity => forward::fwd_velocity;
-    mj_fwdActuation => engine::actuation::fwd_actuation;
-    mj_fwdAcceleration => forward::fwd_acceleration;
-    mj_fwdConstraint => forward::fwd_constraint;
-    mj_Euler => |m, d| integrate::euler(m, d, false);
-    mj_kinematics => kinematics::kinematics;
-    mj_comPos => kinematics::com_pos;
-    mj_camlight => |m, d| { kinematics::camlight(m, d, false); Ok(()) };
-    mj_tendon => |m, _d| forward::tendon(m);
-    mj_transmission => engine::transmission::transmission;
-    mj_crb => |m, d| { inertia::crb(m, d, true); Ok(()) };
-    mj_factorM => inertia::factor_m;
-    mj_comVel => |m, d| { engine::velocity::com_vel(m, d); Ok(()) };
-    mj_passive => engine::passive::passive;
-    mj_checkPos => forward::check_pos;
-    mj_checkVel => forward::check_vel;
-    mj_checkAcc => forward::check_acc;
-    mj_energyPos => |m, d| { support::energy_pos(m, d); Ok(()) };
-    mj_energyVel => support::energy_vel;
-    mj_collision => engine::collision::collision;
+#[no_mangle]
+pub unsafe extern "C" fn mj_step1(m: *const mjModel, d: *mut mjData) {
+    run("mj_step1", (), m, d, forward::step1)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_step2(m: *const mjModel, d: *mut mjData) {
+    run("mj_step2", (), m, d, forward::step2)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_forward(m: *const mjModel, d: *mut mjData) {
+    run("mj_forward", (), m, d, forward::forward)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_fwdPosition(m: *const mjModel, d: *mut mjData) {
+    run("mj_fwdPosition", (), m, d, forward::fwd_position)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_fwdVelocity(m: *const mjModel, d: *mut mjData) {
+    run("mj_fwdVelocity", (), m, d, forward::fwd_velocity)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_fwdActuation(m: *const mjModel, d: *mut mjData) {
+    run(
+        "mj_fwdActuation",
+        (),
+        m,
+        d,
+        engine::actuation::fwd_actuation,
+    )
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_fwdAcceleration(m: *const mjModel, d: *mut mjData) {
+    run("mj_fwdAcceleration", (), m, d, forward::fwd_acceleration)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_fwdConstraint(m: *const mjModel, d: *mut mjData) {
+    run("mj_fwdConstraint", (), m, d, forward::fwd_constraint)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_Euler(m: *const mjModel, d: *mut mjData) {
+    run("mj_Euler", (), m, d, |m, d| integrate::euler(m, d, false))
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_kinematics(m: *const mjModel, d: *mut mjData) {
+    run("mj_kinematics", (), m, d, kinematics::kinematics)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_comPos(m: *const mjModel, d: *mut mjData) {
+    run("mj_comPos", (), m, d, kinematics::com_pos)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_camlight(m: *const mjModel, d: *mut mjData) {
+    run("mj_camlight", (), m, d, |m, d| {
+        kinematics::camlight(m, d, false);
+        Ok(())
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_tendon(m: *const mjModel, d: *mut mjData) {
+    run("mj_tendon", (), m, d, |m, _d| forward::tendon(m))
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_transmission(m: *const mjModel, d: *mut mjData) {
+    run(
+        "mj_transmission",
+        (),
+        m,
+        d,
+        engine::transmission::transmission,
+    )
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_crb(m: *const mjModel, d: *mut mjData) {
+    run("mj_crb", (), m, d, |m, d| {
+        inertia::crb(m, d, true);
+        Ok(())
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_factorM(m: *const mjModel, d: *mut mjData) {
+    run("mj_factorM", (), m, d, inertia::factor_m)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_comVel(m: *const mjModel, d: *mut mjData) {
+    run("mj_comVel", (), m, d, |m, d| {
+        engine::velocity::com_vel(m, d);
+        Ok(())
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_passive(m: *const mjModel, d: *mut mjData) {
+    run("mj_passive", (), m, d, engine::passive::passive)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_checkPos(m: *const mjModel, d: *mut mjData) {
+    run("mj_checkPos", (), m, d, forward::check_pos)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_checkVel(m: *const mjModel, d: *mut mjData) {
+    run("mj_checkVel", (), m, d, forward::check_vel)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_checkAcc(m: *const mjModel, d: *mut mjData) {
+    run("mj_checkAcc", (), m, d, forward::check_acc)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_energyPos(m: *const mjModel, d: *mut mjData) {
+    run("mj_energyPos", (), m, d, |m, d| {
+        support::energy_pos(m, d);
+        Ok(())
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_energyVel(m: *const mjModel, d: *mut mjData) {
+    run("mj_energyVel", (), m, d, support::energy_vel)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_collision(m: *const mjModel, d: *mut mjData) {
+    run("mj_collision", (), m, d, engine::collision::collision)
 }
 
 #[no_mangle]
