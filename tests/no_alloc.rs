@@ -1,0 +1,109 @@
+//! mj_step and mj_forward take no memory from the heap: every allocation in this test binary
+//! goes through a counting allocator, and none may happen while stepping.
+
+use mujoco::abi::*;
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::ffi::CString;
+use std::os::raw::{c_char, c_int};
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+struct Counting;
+
+static ALLOCATIONS: AtomicUsize = AtomicUsize::new(0);
+
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        ALLOCATIONS.fetch_add(1, Ordering::SeqCst);
+        System.alloc(layout)
+    }
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        System.dealloc(ptr, layout)
+    }
+    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
+        ALLOCATIONS.fetch_add(1, Ordering::SeqCst);
+        System.realloc(ptr, layout, new_size)
+    }
+}
+
+#[global_allocator]
+static GLOBAL: Counting = Counting;
+
+extern "C" {
+    fn mj_loadXML(
+        filename: *const c_char,
+        vfs: *const mjVFS,
+        error: *mut c_char,
+        error_sz: c_int,
+    ) -> *mut mjModel;
+    fn mj_makeData(m: *const mjModel) -> *mut mjData;
+    fn mj_step(m: *const mjModel, d: *mut mjData);
+    fn mj_forward(m: *const mjModel, d: *mut mjData);
+    fn mj_deleteData(d: *mut mjData);
+    fn mj_deleteModel(m: *mut mjModel);
+}
+
+/// libc's malloc is not counted by the Rust allocator: count mju_malloc too.
+static C_ALLOCATIONS: AtomicUsize = AtomicUsize::new(0);
+
+unsafe extern "C" fn counting_malloc(size: usize) -> *mut std::os::raw::c_void {
+    C_ALLOCATIONS.fetch_add(1, Ordering::SeqCst);
+    libc_malloc(size)
+}
+
+extern "C" {
+    #[link_name = "malloc"]
+    fn libc_malloc(size: usize) -> *mut std::os::raw::c_void;
+    #[link_name = "free"]
+    fn libc_free(p: *mut std::os::raw::c_void);
+}
+
+unsafe extern "C" fn counting_free(p: *mut std::os::raw::c_void) {
+    libc_free(p)
+}
+
+unsafe extern "C" fn fail(msg: *const c_char) {
+    eprintln!("mju_error: {}", std::ffi::CStr::from_ptr(msg).to_string_lossy());
+    std::process::exit(1);
+}
+
+#[test]
+fn stepping_does_not_allocate() {
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/models");
+    unsafe {
+        mujoco::capi::errmem::mju_user_malloc = Some(counting_malloc);
+        mujoco::capi::errmem::mju_user_free = Some(counting_free);
+        mujoco::capi::errmem::mju_user_error = Some(fail);
+    }
+    for name in ["pendulum", "arm3", "freebox", "chain"] {
+        let path = CString::new(format!("{dir}/{name}.xml")).unwrap();
+        let mut err = [0 as c_char; 500];
+        unsafe {
+            let m = mj_loadXML(path.as_ptr(), std::ptr::null(), err.as_mut_ptr(), 500);
+            assert!(!m.is_null(), "{name} did not load");
+            let d = mj_makeData(m);
+            for _ in 0..10 {
+                mj_step(m, d);
+            }
+            let before = (
+                ALLOCATIONS.load(Ordering::SeqCst),
+                C_ALLOCATIONS.load(Ordering::SeqCst),
+            );
+            for _ in 0..1000 {
+                mj_step(m, d);
+                mj_forward(m, d);
+            }
+            let after = (
+                ALLOCATIONS.load(Ordering::SeqCst),
+                C_ALLOCATIONS.load(Ordering::SeqCst),
+            );
+            println!(
+                "{name}: {} Rust and {} C allocations in 1000 mj_step + mj_forward",
+                after.0 - before.0,
+                after.1 - before.1
+            );
+            assert_eq!(before, after, "{name}: mj_step/mj_forward allocated");
+            mj_deleteData(d);
+            mj_deleteModel(m);
+        }
+    }
+}
