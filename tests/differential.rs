@@ -110,6 +110,11 @@ fn names() {
 }
 
 #[test]
+fn one_step_from_each_state() {
+    check("step");
+}
+
+#[test]
 fn stepped_trajectories() {
     check("traj");
 }

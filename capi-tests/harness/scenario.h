@@ -99,6 +99,22 @@ inline void check_forward(const mjModel* m, mjData* d, const Inputs& in, Writer&
   }
 }
 
+// One mj_step from each state: localizes integrator differences the trajectory accumulates.
+inline void check_step(const mjModel* m, mjData* d, const Inputs& in, Writer& w) {
+  for (int k = 0; k < in.nstate; k++) {
+    at_state(m, d, in, k, false);
+    mj_step(m, d);
+    std::string i = I(k);
+    w.d("time#" + i, &d->time, 1);
+    w.d("qpos#" + i, d->qpos, m->nq);
+    w.d("qvel#" + i, d->qvel, m->nv);
+    w.d("act#" + i, d->act, m->na);
+    w.d("qacc#" + i, d->qacc, m->nv);
+    w.d("qacc_warmstart#" + i, d->qacc_warmstart, m->nv);
+    w.d("sensordata#" + i, d->sensordata, m->nsensordata);
+  }
+}
+
 inline void test_point(const mjData* d, int body, mjtNum* point) {
   const mjtNum off[3] = {0.1, -0.2, 0.3};
   for (int j = 0; j < 3; j++) point[j] = d->xpos[3 * body + j] + off[j];
@@ -248,6 +264,7 @@ inline bool needs_data(const std::string& group) {
 inline std::vector<std::pair<std::string, Check>> state_checks() {
   return {
       {"forward", check_forward},
+      {"step", check_step},
       {"jacSite", check_jac("jacSite")},
       {"jacBody", check_jac("jacBody")},
       {"jacBodyCom", check_jac("jacBodyCom")},
