@@ -53,7 +53,13 @@ void on_error(const char* msg) {
   _exit(3);
 }
 
-void on_warning(const char* msg) { std::fprintf(stderr, "mju_warning: %s\n", msg); }
+// Prints the first few warnings of a check group (the data's warning counters are compared).
+void on_warning(const char* msg) {
+  static int count = 0;
+  if (count < 3) std::fprintf(stderr, "mju_warning: %s\n", msg);
+  if (count == 3) std::fprintf(stderr, "mju_warning: (further warnings not shown)\n");
+  count++;
+}
 
 // Runs fn ("" = success, else a failure message) in a child process with a time limit.
 bool isolated(const std::string& status, const std::function<std::string()>& fn, int seconds) {
