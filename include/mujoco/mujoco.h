@@ -259,8 +259,6 @@ int mj_deleteFileVFS(mjVFS *vfs, const char *filename);
 
 void mj_deleteVFS(mjVFS *vfs);
 
-mjModel *mj_loadXML(const char *filename, const mjVFS *vfs, char *error, int error_sz);
-
 int mj_saveLastXML(const char *filename, const mjModel *m, char *error, int error_sz);
 
 void mj_freeLastXML(void);
@@ -599,6 +597,8 @@ void mju_printMatSparse(const mjtNum *mat,
                         const int *colind);
 
 void mju_geomSemiAxes(const mjModel *m, int geom_id, mjtNum *semiaxes);
+
+mjModel *mj_loadXML(const char *filename, const mjVFS *vfs, char *error, int error_sz);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -804,7 +804,7 @@ pub fn with_temp_data(
     m: &mut mjModel,
     f: impl FnOnce(&mut mjModel, &mut mjData) -> Result<(), EngineError>,
 ) -> Result<(), EngineError> {
-    let d = alloc::make_data(m).map_err(EngineError)?;
+    let d = super::io::new_data(m).map_err(EngineError)?;
     // SAFETY: d was just made for m and is freed right after.
     let r = f(m, unsafe { &mut *d });
     unsafe { alloc::delete_data(d) };

@@ -8,12 +8,6 @@ use std::os::raw::{c_char, c_int, c_void};
 use super::pending;
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_loadXML(filename: *const c_char, vfs: *const mjVFS, error: *mut c_char, error_sz: c_int) -> *mut mjModel {
-    pending("mj_loadXML");
-    std::ptr::null_mut()
-}
-
-#[no_mangle]
 pub unsafe extern "C" fn mj_saveLastXML(filename: *const c_char, m: *const mjModel, error: *mut c_char, error_sz: c_int) -> c_int {
     pending("mj_saveLastXML");
     0 as c_int

@@ -12,6 +12,7 @@ pub mod jacobian;
 pub mod kinematics;
 pub mod linalg;
 pub mod passive;
+pub mod print;
 pub mod rne;
 pub mod setconst;
 pub mod support;

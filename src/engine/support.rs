@@ -112,6 +112,13 @@ crate::mjdata_pointers!(zero_data_arrays);
 
 /// mj_resetData on the views: clear header and arrays, qpos = qpos0, mocap from bodies.
 pub fn reset_data(m: &Model, d: &mut Data) {
+    clear_header(d);
+    zero_arrays(d);
+    reset_state(m, d);
+}
+
+/// Clears the header: stack use, diagnostics, sizes, time, energy.
+pub fn clear_header(d: &mut Data) {
     let r = &mut *d.raw;
     r.pstack = 0;
     r.maxuse_stack = 0;
@@ -143,13 +150,60 @@ pub fn reset_data(m: &Model, d: &mut Data) {
     r.ncon = 0;
     r.time = 0.0;
     r.energy = [0.0; 2];
-    zero_arrays(d);
+}
+
+/// Zeroes the inputs and the arrays mj_forward does not fill; qpos = qpos0, mocap from bodies.
+pub fn reset_state(m: &Model, d: &mut Data) {
+    for a in [
+        &mut d.qpos,
+        &mut d.qvel,
+        &mut d.act,
+        &mut d.ctrl,
+        &mut d.qfrc_applied,
+        &mut d.xfrc_applied,
+    ] {
+        a.fill(0.0);
+    }
+    for a in [
+        &mut d.qacc,
+        &mut d.qacc_warmstart,
+        &mut d.act_dot,
+        &mut d.userdata,
+        &mut d.sensordata,
+    ] {
+        a.fill(0.0);
+    }
+    d.mocap_pos.fill(0.0);
+    d.mocap_quat.fill(0.0);
     d.qpos.copy_from_slice(m.qpos0());
     for (i, &id) in m.body_mocapid().iter().enumerate() {
         if id >= 0 {
             put(d.mocap_pos, id as usize, &row::<3>(m.body_pos(), i));
             put(d.mocap_quat, id as usize, &row::<4>(m.body_quat(), i));
         }
+    }
+}
+
+/// mj_resetDataKeyframe: reset, then take time, state, mocap poses and controls from keyframe
+/// `key` when it exists.
+pub fn reset_data_keyframe(m: &Model, d: &mut Data, key: i32) {
+    reset_data(m, d);
+    if key < 0 || key >= m.raw.nkey {
+        return;
+    }
+    let k = key as usize;
+    d.raw.time = m.key_time()[k];
+    let rows = [
+        (&mut d.qpos, m.key_qpos()),
+        (&mut d.qvel, m.key_qvel()),
+        (&mut d.act, m.key_act()),
+        (&mut d.mocap_pos, m.key_mpos()),
+        (&mut d.mocap_quat, m.key_mquat()),
+        (&mut d.ctrl, m.key_ctrl()),
+    ];
+    for (dst, src) in rows {
+        let n = dst.len();
+        dst.copy_from_slice(&src[k * n..(k + 1) * n]);
     }
 }
 
