@@ -56,19 +56,35 @@ fn testspeed_runs_on_ours() {
         "ldd under LD_LIBRARY_PATH does not pick ours: {line}"
     );
 
+    // best of three alternating runs: the machine's cores are shared
     let arm3 = model("arm3.xml");
-    let reference = run(TESTSPEED.as_ref(), &[&arm3, STEPS], &[], 120);
-    let ref_sps = steps_per_second(&text(&reference.stdout));
-    let ours = run(
-        TESTSPEED.as_ref(),
-        &[&arm3, STEPS],
-        &[("LD_LIBRARY_PATH", &ld)],
-        120,
-    );
-    let our_sps = steps_per_second(&text(&ours.stdout));
+    let (mut ref_sps, mut our_sps) = (None::<f64>, None::<f64>);
+    let (mut reference, mut ours) = (None, None);
+    for _ in 0..3 {
+        let r = run(TESTSPEED.as_ref(), &[&arm3, STEPS], &[], 120);
+        let o = run(
+            TESTSPEED.as_ref(),
+            &[&arm3, STEPS],
+            &[("LD_LIBRARY_PATH", &ld)],
+            120,
+        );
+        let best = |a: Option<f64>, b: Option<f64>| match (a, b) {
+            (Some(x), Some(y)) => Some(x.max(y)),
+            (x, y) => x.or(y),
+        };
+        ref_sps = best(ref_sps, steps_per_second(&text(&r.stdout)));
+        our_sps = best(our_sps, steps_per_second(&text(&o.stdout)));
+        let failed = !o.status.success();
+        reference = Some(r);
+        ours = Some(o);
+        if failed {
+            break;
+        }
+    }
+    let (reference, ours) = (reference.unwrap(), ours.unwrap());
     let fmt = |s: Option<f64>| s.map_or("-".to_string(), |v| format!("{v:.0}"));
     let msg = format!(
-        "drop-in: mujoco-testspeed models/arm3.xml {STEPS}: ldd -> {resolved}\n  steps per second: reference {}, ours {}{}\n",
+        "drop-in: mujoco-testspeed models/arm3.xml {STEPS}: ldd -> {resolved}\n  steps per second (best of 3): reference {}, ours {}{}\n",
         fmt(ref_sps),
         fmt(our_sps),
         match (ref_sps, our_sps) {
