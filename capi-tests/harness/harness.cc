@@ -210,7 +210,7 @@ int compare(const std::string& dir, bool verbose, const std::string& only) {
     if (only.empty() || ("," + only + ",").find("," + g + ",") != std::string::npos) groups.push_back(g);
   }
   int npass = 0;
-  double worst = 0;
+  double worst = 0, residual = 0;
   for (const std::string& g : groups) {
     double gw;
     bool ok = compare_group(dir, g, tolerance(g), verbose, &gw);
@@ -219,10 +219,13 @@ int compare(const std::string& dir, bool verbose, const std::string& only) {
       if (note.rfind("no result", 0) != 0) std::printf("  %-16s note  %s\n", "traj", note.c_str());
     }
     npass += ok;
-    if (!(gw <= worst)) worst = gw;
+    // consistency holds self-check residuals, not differences between the libraries
+    double& w = g == "consistency" ? residual : worst;
+    if (!(gw <= w)) w = gw;
   }
-  std::printf("  %d of %zu check groups pass; worst relative error %.2e\n", npass, groups.size(),
-              worst);
+  std::printf("  %d of %zu check groups pass; worst relative error %.2e", npass, groups.size(), worst);
+  if (residual > 0) std::printf(" (self-check residuals up to %.2e)", residual);
+  std::printf("\n");
   return npass == (int)groups.size() ? 0 : 1;
 }
 
