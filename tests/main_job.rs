@@ -29,7 +29,7 @@ fn main_job(args: &[&str], expect: &str) {
 
 #[test]
 fn default_model() {
-    main_job(&[], "model ");
+    main_job(&[], "chain");
 }
 
 #[test]
