@@ -72,7 +72,11 @@ fn main() {
             std::fs::create_dir_all(&dir).expect("temp dir");
             let file = dir.join("chain.xml");
             std::fs::write(&file, DEFAULT_MODEL).expect("write default model");
-            (file.to_string_lossy().into_owned(), "embedded default model".to_string(), Some(TempDir(dir)))
+            (
+                file.to_string_lossy().into_owned(),
+                "embedded default model".to_string(),
+                Some(TempDir(dir)),
+            )
         }
     };
     let m = match load(&path) {

@@ -159,8 +159,6 @@ void mj_applyFT(const mjModel *m,
                 int body,
                 mjtNum *qfrc_target);
 
-void mj_xfrcAccumulate(const mjModel *m, mjData *d, mjtNum *qfrc);
-
 int mj_name2id(const mjModel *m, int type_, const char *name);
 
 const char *mj_id2name(const mjModel *m, int type_, int id);

@@ -645,17 +645,6 @@ pub unsafe extern "C" fn mj_applyFT(
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_xfrcAccumulate(m: *const mjModel, d: *mut mjData, qfrc: *mut mjtNum) {
-    run("mj_xfrcAccumulate", (), m, d, |mv, dv| {
-        let nv = mv.raw.nv as usize;
-        let mut q: Vec<f64> = slice(qfrc, nv).to_vec();
-        forward::xfrc_accumulate(mv, dv, &mut q)?;
-        slice_mut(qfrc, nv).copy_from_slice(&q);
-        Ok(())
-    })
-}
-
-#[no_mangle]
 pub unsafe extern "C" fn mj_name2id(m: *const mjModel, type_: c_int, name: *const c_char) -> c_int {
     if m.is_null() || name.is_null() {
         return -1;
