@@ -40,6 +40,155 @@ extern mjfAct mjcb_act_bias;
 
 extern mjfCollision mjCOLLISIONFUNC[8][8];
 
+void mj_step(const mjModel *m, mjData *d);
+
+void mj_step1(const mjModel *m, mjData *d);
+
+void mj_step2(const mjModel *m, mjData *d);
+
+void mj_forward(const mjModel *m, mjData *d);
+
+void mj_fwdPosition(const mjModel *m, mjData *d);
+
+void mj_fwdVelocity(const mjModel *m, mjData *d);
+
+void mj_fwdActuation(const mjModel *m, mjData *d);
+
+void mj_fwdAcceleration(const mjModel *m, mjData *d);
+
+void mj_fwdConstraint(const mjModel *m, mjData *d);
+
+void mj_Euler(const mjModel *m, mjData *d);
+
+void mj_kinematics(const mjModel *m, mjData *d);
+
+void mj_comPos(const mjModel *m, mjData *d);
+
+void mj_camlight(const mjModel *m, mjData *d);
+
+void mj_tendon(const mjModel *m, mjData *d);
+
+void mj_transmission(const mjModel *m, mjData *d);
+
+void mj_crb(const mjModel *m, mjData *d);
+
+void mj_factorM(const mjModel *m, mjData *d);
+
+void mj_comVel(const mjModel *m, mjData *d);
+
+void mj_passive(const mjModel *m, mjData *d);
+
+void mj_checkPos(const mjModel *m, mjData *d);
+
+void mj_checkVel(const mjModel *m, mjData *d);
+
+void mj_checkAcc(const mjModel *m, mjData *d);
+
+void mj_energyPos(const mjModel *m, mjData *d);
+
+void mj_energyVel(const mjModel *m, mjData *d);
+
+void mj_collision(const mjModel *m, mjData *d);
+
+void mj_forwardSkip(const mjModel *m, mjData *d, int skipstage, int skipsensor);
+
+void mj_stepSkip(const mjModel *m, mjData *d, int skipstage, int skipsensor);
+
+void mj_EulerSkip(const mjModel *m, mjData *d, int skipfactor);
+
+void mj_RungeKutta(const mjModel *m, mjData *d, int N);
+
+void mj_solveM(const mjModel *m, mjData *d, mjtNum *x, const mjtNum *y, int n);
+
+void mj_solveM2(const mjModel *m, mjData *d, mjtNum *x, const mjtNum *y, int n);
+
+void mj_solveLD(const mjModel *m,
+                mjtNum *x,
+                const mjtNum *y,
+                int n,
+                const mjtNum *qLD,
+                const mjtNum *qLDiagInv);
+
+void mj_factorI(const mjModel *m,
+                mjData *d,
+                const mjtNum *M,
+                mjtNum *qLD,
+                mjtNum *qLDiagInv,
+                mjtNum *qLDiagSqrtInv);
+
+void mj_rne(const mjModel *m, mjData *d, int flg_acc, mjtNum *result);
+
+void mj_jac(const mjModel *m,
+            const mjData *d,
+            mjtNum *jacp,
+            mjtNum *jacr,
+            const mjtNum *point,
+            int body);
+
+void mj_jacBody(const mjModel *m, const mjData *d, mjtNum *jacp, mjtNum *jacr, int body);
+
+void mj_jacBodyCom(const mjModel *m, const mjData *d, mjtNum *jacp, mjtNum *jacr, int body);
+
+void mj_jacGeom(const mjModel *m, const mjData *d, mjtNum *jacp, mjtNum *jacr, int geom);
+
+void mj_jacSite(const mjModel *m, const mjData *d, mjtNum *jacp, mjtNum *jacr, int site);
+
+void mj_jacSubtreeCom(const mjModel *m, mjData *d, mjtNum *jacp, int body);
+
+void mj_jacPointAxis(const mjModel *m,
+                     mjData *d,
+                     mjtNum *jacPoint,
+                     mjtNum *jacAxis,
+                     const mjtNum *point,
+                     const mjtNum *axis,
+                     int body);
+
+void mj_fullM(const mjModel *m, mjtNum *dst, const mjtNum *M);
+
+void mj_mulM(const mjModel *m, const mjData *d, mjtNum *res, const mjtNum *vec);
+
+void mj_mulM2(const mjModel *m, const mjData *d, mjtNum *res, const mjtNum *vec);
+
+void mj_addM(const mjModel *m, mjData *d, mjtNum *dst, int *rownnz, int *rowadr, int *colind);
+
+void mj_applyFT(const mjModel *m,
+                mjData *d,
+                const mjtNum *force,
+                const mjtNum *torque,
+                const mjtNum *point,
+                int body,
+                mjtNum *qfrc_target);
+
+int mj_name2id(const mjModel *m, int type_, const char *name);
+
+const char *mj_id2name(const mjModel *m, int type_, int id);
+
+void mj_differentiatePos(const mjModel *m,
+                         mjtNum *qvel,
+                         mjtNum dt,
+                         const mjtNum *qpos1,
+                         const mjtNum *qpos2);
+
+void mj_integratePos(const mjModel *m, mjtNum *qpos, const mjtNum *qvel, mjtNum dt);
+
+void mj_normalizeQuat(const mjModel *m, mjtNum *qpos);
+
+void mj_local2Global(mjData *d,
+                     mjtNum *xpos,
+                     mjtNum *xmat,
+                     const mjtNum *pos,
+                     const mjtNum *quat,
+                     int body,
+                     mjtByte sameframe);
+
+mjtNum mj_getTotalmass(const mjModel *m);
+
+void mj_setTotalmass(mjModel *m, mjtNum newmass);
+
+void mj_warning(mjData *d, int warning, int info);
+
+void mj_setConst(mjModel *m, mjData *d);
+
 void mju_error(const char *msg);
 
 void mju_warning(const char *msg);
@@ -108,31 +257,17 @@ int mj_deleteFileVFS(mjVFS *vfs, const char *filename);
 
 void mj_deleteVFS(mjVFS *vfs);
 
-mjModel *mj_loadXML(const char *filename, const mjVFS *vfs, char *error, int error_sz);
-
 int mj_saveLastXML(const char *filename, const mjModel *m, char *error, int error_sz);
 
 void mj_freeLastXML(void);
 
 int mj_printSchema(const char *filename, char *buffer, int buffer_sz, int flg_html, int flg_pad);
 
-void mj_step(const mjModel *m, mjData *d);
-
-void mj_step1(const mjModel *m, mjData *d);
-
-void mj_step2(const mjModel *m, mjData *d);
-
-void mj_forward(const mjModel *m, mjData *d);
-
 void mj_inverse(const mjModel *m, mjData *d);
-
-void mj_forwardSkip(const mjModel *m, mjData *d, int skipstage, int skipsensor);
 
 void mj_inverseSkip(const mjModel *m, mjData *d, int skipstage, int skipsensor);
 
 void mj_resetCallbacks(void);
-
-void mj_setConst(mjModel *m, mjData *d);
 
 int mj_setLengthRange(mjModel *m,
                       mjData *d,
@@ -140,20 +275,6 @@ int mj_setLengthRange(mjModel *m,
                       const mjLROpt *opt,
                       char *error,
                       int error_sz);
-
-void mj_fwdPosition(const mjModel *m, mjData *d);
-
-void mj_fwdVelocity(const mjModel *m, mjData *d);
-
-void mj_fwdActuation(const mjModel *m, mjData *d);
-
-void mj_fwdAcceleration(const mjModel *m, mjData *d);
-
-void mj_fwdConstraint(const mjModel *m, mjData *d);
-
-void mj_Euler(const mjModel *m, mjData *d);
-
-void mj_RungeKutta(const mjModel *m, mjData *d, int N);
 
 void mj_invPosition(const mjModel *m, mjData *d);
 
@@ -169,45 +290,9 @@ void mj_sensorVel(const mjModel *m, mjData *d);
 
 void mj_sensorAcc(const mjModel *m, mjData *d);
 
-void mj_energyPos(const mjModel *m, mjData *d);
-
-void mj_energyVel(const mjModel *m, mjData *d);
-
-void mj_checkPos(const mjModel *m, mjData *d);
-
-void mj_checkVel(const mjModel *m, mjData *d);
-
-void mj_checkAcc(const mjModel *m, mjData *d);
-
-void mj_kinematics(const mjModel *m, mjData *d);
-
-void mj_comPos(const mjModel *m, mjData *d);
-
-void mj_camlight(const mjModel *m, mjData *d);
-
-void mj_tendon(const mjModel *m, mjData *d);
-
-void mj_transmission(const mjModel *m, mjData *d);
-
-void mj_crb(const mjModel *m, mjData *d);
-
-void mj_factorM(const mjModel *m, mjData *d);
-
-void mj_solveM(const mjModel *m, mjData *d, mjtNum *x, const mjtNum *y, int n);
-
-void mj_solveM2(const mjModel *m, mjData *d, mjtNum *x, const mjtNum *y, int n);
-
-void mj_comVel(const mjModel *m, mjData *d);
-
-void mj_passive(const mjModel *m, mjData *d);
-
 void mj_subtreeVel(const mjModel *m, mjData *d);
 
-void mj_rne(const mjModel *m, mjData *d, int flg_acc, mjtNum *result);
-
 void mj_rnePostConstraint(const mjModel *m, mjData *d);
-
-void mj_collision(const mjModel *m, mjData *d);
 
 void mj_makeConstraint(const mjModel *m, mjData *d);
 
@@ -233,51 +318,6 @@ void mj_mulJacVec(const mjModel *m, mjData *d, mjtNum *res, const mjtNum *vec);
 
 void mj_mulJacTVec(const mjModel *m, mjData *d, mjtNum *res, const mjtNum *vec);
 
-void mj_jac(const mjModel *m,
-            const mjData *d,
-            mjtNum *jacp,
-            mjtNum *jacr,
-            const mjtNum *point,
-            int body);
-
-void mj_jacBody(const mjModel *m, const mjData *d, mjtNum *jacp, mjtNum *jacr, int body);
-
-void mj_jacBodyCom(const mjModel *m, const mjData *d, mjtNum *jacp, mjtNum *jacr, int body);
-
-void mj_jacSubtreeCom(const mjModel *m, mjData *d, mjtNum *jacp, int body);
-
-void mj_jacGeom(const mjModel *m, const mjData *d, mjtNum *jacp, mjtNum *jacr, int geom);
-
-void mj_jacSite(const mjModel *m, const mjData *d, mjtNum *jacp, mjtNum *jacr, int site);
-
-void mj_jacPointAxis(const mjModel *m,
-                     mjData *d,
-                     mjtNum *jacPoint,
-                     mjtNum *jacAxis,
-                     const mjtNum *point,
-                     const mjtNum *axis,
-                     int body);
-
-int mj_name2id(const mjModel *m, int type_, const char *name);
-
-const char *mj_id2name(const mjModel *m, int type_, int id);
-
-void mj_fullM(const mjModel *m, mjtNum *dst, const mjtNum *M);
-
-void mj_mulM(const mjModel *m, const mjData *d, mjtNum *res, const mjtNum *vec);
-
-void mj_mulM2(const mjModel *m, const mjData *d, mjtNum *res, const mjtNum *vec);
-
-void mj_addM(const mjModel *m, mjData *d, mjtNum *dst, int *rownnz, int *rowadr, int *colind);
-
-void mj_applyFT(const mjModel *m,
-                mjData *d,
-                const mjtNum *force,
-                const mjtNum *torque,
-                const mjtNum *point,
-                int body,
-                mjtNum *qfrc_target);
-
 void mj_objectVelocity(const mjModel *m,
                        const mjData *d,
                        int objtype,
@@ -293,28 +333,6 @@ void mj_objectAcceleration(const mjModel *m,
                            int flg_local);
 
 void mj_contactForce(const mjModel *m, const mjData *d, int id, mjtNum *result);
-
-void mj_differentiatePos(const mjModel *m,
-                         mjtNum *qvel,
-                         mjtNum dt,
-                         const mjtNum *qpos1,
-                         const mjtNum *qpos2);
-
-void mj_integratePos(const mjModel *m, mjtNum *qpos, const mjtNum *qvel, mjtNum dt);
-
-void mj_normalizeQuat(const mjModel *m, mjtNum *qpos);
-
-void mj_local2Global(mjData *d,
-                     mjtNum *xpos,
-                     mjtNum *xmat,
-                     const mjtNum *pos,
-                     const mjtNum *quat,
-                     int body,
-                     mjtByte sameframe);
-
-mjtNum mj_getTotalmass(const mjModel *m);
-
-void mj_setTotalmass(mjModel *m, mjtNum newmass);
 
 mjtNum mj_ray(const mjModel *m,
               const mjData *d,
@@ -351,8 +369,6 @@ mjtNum mju_raySkin(int nface,
                    const mjtNum *pnt,
                    const mjtNum *vec,
                    int *vertid);
-
-void mj_warning(mjData *d, int warning, int info);
 
 int mj_activate(const char *filename);
 
@@ -579,6 +595,8 @@ void mju_printMatSparse(const mjtNum *mat,
                         const int *colind);
 
 void mju_geomSemiAxes(const mjModel *m, int geom_id, mjtNum *semiaxes);
+
+mjModel *mj_loadXML(const char *filename, const mjVFS *vfs, char *error, int error_sz);
 
 #ifdef __cplusplus
 }  // extern "C"

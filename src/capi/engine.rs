@@ -1,1 +1,826 @@
-//! C entry points.
+//! C entry points of the simulation pipeline: build the views once, run the core under `guard`.
+
+use super::errmem;
+use super::globals::*;
+use super::guard;
+use crate::abi::view::{Data, EngineError, Model, ModelMut};
+use crate::abi::*;
+use crate::engine::{self, forward, inertia, integrate, jacobian, kinematics, support};
+use std::os::raw::{c_char, c_int};
+
+unsafe fn slice<'a>(p: *const f64, n: usize) -> &'a [f64] {
+    if p.is_null() || n == 0 {
+        &[]
+    } else {
+        std::slice::from_raw_parts(p, n)
+    }
+}
+
+unsafe fn slice_mut<'a>(p: *mut f64, n: usize) -> &'a mut [f64] {
+    if p.is_null() || n == 0 {
+        &mut []
+    } else {
+        std::slice::from_raw_parts_mut(p, n)
+    }
+}
+
+unsafe fn arr3(p: *const f64) -> [f64; 3] {
+    [*p, *p.add(1), *p.add(2)]
+}
+
+/// Names of the user callbacks that are set; calling back into C is not supported yet.
+fn callbacks_set() -> Option<&'static str> {
+    // SAFETY: plain reads of the callback globals, as the C library does.
+    unsafe {
+        let set = [
+            (
+                std::ptr::addr_of!(mjcb_passive).read().is_some(),
+                "mjcb_passive",
+            ),
+            (
+                std::ptr::addr_of!(mjcb_control).read().is_some(),
+                "mjcb_control",
+            ),
+            (
+                std::ptr::addr_of!(mjcb_contactfilter).read().is_some(),
+                "mjcb_contactfilter",
+            ),
+            (
+                std::ptr::addr_of!(mjcb_sensor).read().is_some(),
+                "mjcb_sensor",
+            ),
+            (std::ptr::addr_of!(mjcb_time).read().is_some(), "mjcb_time"),
+            (
+                std::ptr::addr_of!(mjcb_act_dyn).read().is_some(),
+                "mjcb_act_dyn",
+            ),
+            (
+                std::ptr::addr_of!(mjcb_act_gain).read().is_some(),
+                "mjcb_act_gain",
+            ),
+            (
+                std::ptr::addr_of!(mjcb_act_bias).read().is_some(),
+                "mjcb_act_bias",
+            ),
+        ];
+        set.iter().find(|s| s.0).map(|s| s.1)
+    }
+}
+
+/// Runs a pipeline function on views of (m, d) under `guard`.
+unsafe fn run<R>(
+    name: &str,
+    fallback: R,
+    m: *const mjModel,
+    d: *mut mjData,
+    f: impl FnOnce(&Model, &mut Data) -> Result<R, EngineError>,
+) -> R {
+    if m.is_null() || d.is_null() {
+        errmem::error(&format!("{name}: NULL model or data"));
+        return fallback;
+    }
+    guard(name, fallback, || {
+        if let Some(cb) = callbacks_set() {
+            return Err(EngineError(format!(
+                "{name}: callbacks ({cb}) are not implemented yet"
+            )));
+        }
+        let mv = Model::new(&*m);
+        let mut dv = Data::new(&*m, &mut *d);
+        f(&mv, &mut dv)
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_step(m: *const mjModel, d: *mut mjData) {
+    run("mj_step", (), m, d, forward::step)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_step1(m: *const mjModel, d: *mut mjData) {
+    run("mj_step1", (), m, d, forward::step1)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_step2(m: *const mjModel, d: *mut mjData) {
+    run("mj_step2", (), m, d, forward::step2)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_forward(m: *const mjModel, d: *mut mjData) {
+    run("mj_forward", (), m, d, forward::forward)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_fwdPosition(m: *const mjModel, d: *mut mjData) {
+    run("mj_fwdPosition", (), m, d, forward::fwd_position)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_fwdVelocity(m: *const mjModel, d: *mut mjData) {
+    run("mj_fwdVelocity", (), m, d, forward::fwd_velocity)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_fwdActuation(m: *const mjModel, d: *mut mjData) {
+    run(
+        "mj_fwdActuation",
+        (),
+        m,
+        d,
+        engine::actuation::fwd_actuation,
+    )
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_fwdAcceleration(m: *const mjModel, d: *mut mjData) {
+    run("mj_fwdAcceleration", (), m, d, forward::fwd_acceleration)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_fwdConstraint(m: *const mjModel, d: *mut mjData) {
+    run("mj_fwdConstraint", (), m, d, forward::fwd_constraint)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_Euler(m: *const mjModel, d: *mut mjData) {
+    run("mj_Euler", (), m, d, |m, d| integrate::euler(m, d, false))
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_kinematics(m: *const mjModel, d: *mut mjData) {
+    run("mj_kinematics", (), m, d, kinematics::kinematics)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_comPos(m: *const mjModel, d: *mut mjData) {
+    run("mj_comPos", (), m, d, kinematics::com_pos)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_camlight(m: *const mjModel, d: *mut mjData) {
+    run("mj_camlight", (), m, d, |m, d| {
+        kinematics::camlight(m, d, false);
+        Ok(())
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_tendon(m: *const mjModel, d: *mut mjData) {
+    run("mj_tendon", (), m, d, |m, _d| forward::tendon(m))
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_transmission(m: *const mjModel, d: *mut mjData) {
+    run(
+        "mj_transmission",
+        (),
+        m,
+        d,
+        engine::transmission::transmission,
+    )
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_crb(m: *const mjModel, d: *mut mjData) {
+    run("mj_crb", (), m, d, |m, d| {
+        inertia::crb(m, d, true);
+        Ok(())
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_factorM(m: *const mjModel, d: *mut mjData) {
+    run("mj_factorM", (), m, d, inertia::factor_m)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_comVel(m: *const mjModel, d: *mut mjData) {
+    run("mj_comVel", (), m, d, |m, d| {
+        engine::velocity::com_vel(m, d);
+        Ok(())
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_passive(m: *const mjModel, d: *mut mjData) {
+    run("mj_passive", (), m, d, engine::passive::passive)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_checkPos(m: *const mjModel, d: *mut mjData) {
+    run("mj_checkPos", (), m, d, forward::check_pos)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_checkVel(m: *const mjModel, d: *mut mjData) {
+    run("mj_checkVel", (), m, d, forward::check_vel)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_checkAcc(m: *const mjModel, d: *mut mjData) {
+    run("mj_checkAcc", (), m, d, forward::check_acc)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_energyPos(m: *const mjModel, d: *mut mjData) {
+    run("mj_energyPos", (), m, d, |m, d| {
+        support::energy_pos(m, d);
+        Ok(())
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_energyVel(m: *const mjModel, d: *mut mjData) {
+    run("mj_energyVel", (), m, d, support::energy_vel)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_collision(m: *const mjModel, d: *mut mjData) {
+    run("mj_collision", (), m, d, engine::collision::collision)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_forwardSkip(
+    m: *const mjModel,
+    d: *mut mjData,
+    skipstage: c_int,
+    skipsensor: c_int,
+) {
+    run("mj_forwardSkip", (), m, d, |m, d| {
+        forward::forward_skip(m, d, skipstage, skipsensor != 0)
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_stepSkip(
+    m: *const mjModel,
+    d: *mut mjData,
+    skipstage: c_int,
+    skipsensor: c_int,
+) {
+    run("mj_stepSkip", (), m, d, |m, d| {
+        forward::step_skip(m, d, skipstage, skipsensor != 0)
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_EulerSkip(m: *const mjModel, d: *mut mjData, skipfactor: c_int) {
+    run("mj_EulerSkip", (), m, d, |m, d| {
+        integrate::euler(m, d, skipfactor != 0)
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_RungeKutta(m: *const mjModel, d: *mut mjData, N: c_int) {
+    run("mj_RungeKutta", (), m, d, |m, d| {
+        integrate::runge_kutta(m, d, N.max(0) as usize)
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_solveM(
+    m: *const mjModel,
+    d: *mut mjData,
+    x: *mut mjtNum,
+    y: *const mjtNum,
+    n: c_int,
+) {
+    run("mj_solveM", (), m, d, |mv, dv| {
+        let len = n.max(0) as usize * mv.raw.nv as usize;
+        let x = slice_mut(x, len);
+        let y = if y == x.as_ptr() {
+            None
+        } else {
+            Some(slice(y, len))
+        };
+        inertia::solve_ld(mv, x, y, n.max(0) as usize, dv.qLD, dv.qLDiagInv);
+        Ok(())
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_solveM2(
+    m: *const mjModel,
+    d: *mut mjData,
+    x: *mut mjtNum,
+    y: *const mjtNum,
+    n: c_int,
+) {
+    run("mj_solveM2", (), m, d, |mv, dv| {
+        let len = n.max(0) as usize * mv.raw.nv as usize;
+        let tmp: Vec<f64> = slice(y, len).to_vec();
+        inertia::solve_m2(
+            mv,
+            slice_mut(x, len),
+            &tmp,
+            n.max(0) as usize,
+            dv.qLD,
+            dv.qLDiagSqrtInv,
+        );
+        Ok(())
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_solveLD(
+    m: *const mjModel,
+    x: *mut mjtNum,
+    y: *const mjtNum,
+    n: c_int,
+    qLD: *const mjtNum,
+    qLDiagInv: *const mjtNum,
+) {
+    guard("mj_solveLD", (), || {
+        let mv = Model::new(&*m);
+        let len = n.max(0) as usize * mv.raw.nv as usize;
+        let x = slice_mut(x, len);
+        let y = if y == x.as_ptr() {
+            None
+        } else {
+            Some(slice(y, len))
+        };
+        let qld = slice(qLD, mv.raw.nM as usize);
+        let dinv = slice(qLDiagInv, mv.raw.nv as usize);
+        inertia::solve_ld(&mv, x, y, n.max(0) as usize, qld, dinv);
+        Ok(())
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_factorI(
+    m: *const mjModel,
+    d: *mut mjData,
+    M: *const mjtNum,
+    qLD: *mut mjtNum,
+    qLDiagInv: *mut mjtNum,
+    qLDiagSqrtInv: *mut mjtNum,
+) {
+    run("mj_factorI", (), m, d, |mv, dv| {
+        let (nm, nv) = (mv.raw.nM as usize, mv.raw.nv as usize);
+        let mat: Vec<f64> = slice(M, nm).to_vec();
+        let sqrt_inv = if qLDiagSqrtInv.is_null() {
+            None
+        } else {
+            Some(slice_mut(qLDiagSqrtInv, nv))
+        };
+        inertia::factor_i(
+            mv,
+            dv.raw,
+            &mat,
+            slice_mut(qLD, nm),
+            slice_mut(qLDiagInv, nv),
+            sqrt_inv,
+        )
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_rne(
+    m: *const mjModel,
+    d: *mut mjData,
+    flg_acc: c_int,
+    result: *mut mjtNum,
+) {
+    run("mj_rne", (), m, d, |mv, dv| {
+        let nv = mv.raw.nv as usize;
+        let mut out = vec![0.0; nv];
+        let qacc: Vec<f64> = dv.qacc.to_vec();
+        engine::rne::rne_with(mv, dv, (flg_acc != 0).then_some(&qacc[..]), &mut out)?;
+        slice_mut(result, nv).copy_from_slice(&out);
+        Ok(())
+    })
+}
+
+/// Jacobian rows at `point` on `body`, from the raw data (the C signature has a const mjData).
+unsafe fn jac_raw(
+    m: *const mjModel,
+    d: *const mjData,
+    jacp: *mut f64,
+    jacr: *mut f64,
+    point: [f64; 3],
+    body: c_int,
+) {
+    guard("mj_jac", (), || {
+        let mv = Model::new(&*m);
+        let (nv, nbody) = (mv.raw.nv as usize, mv.raw.nbody as usize);
+        if body < 0 || body as usize >= nbody {
+            return Err(EngineError(format!("Invalid body {body} in mj_jac")));
+        }
+        let cdof = slice((*d).cdof, 6 * nv);
+        let com = slice((*d).subtree_com, 3 * nbody);
+        let p = (!jacp.is_null()).then(|| slice_mut(jacp, 3 * nv));
+        let r = (!jacr.is_null()).then(|| slice_mut(jacr, 3 * nv));
+        jacobian::jac(&mv, cdof, com, &point, body as usize, p, r);
+        Ok(())
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_jac(
+    m: *const mjModel,
+    d: *const mjData,
+    jacp: *mut mjtNum,
+    jacr: *mut mjtNum,
+    point: *const mjtNum,
+    body: c_int,
+) {
+    jac_raw(m, d, jacp, jacr, arr3(point), body)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_jacBody(
+    m: *const mjModel,
+    d: *const mjData,
+    jacp: *mut mjtNum,
+    jacr: *mut mjtNum,
+    body: c_int,
+) {
+    jac_raw(
+        m,
+        d,
+        jacp,
+        jacr,
+        arr3((*d).xpos.add(3 * body.max(0) as usize)),
+        body,
+    )
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_jacBodyCom(
+    m: *const mjModel,
+    d: *const mjData,
+    jacp: *mut mjtNum,
+    jacr: *mut mjtNum,
+    body: c_int,
+) {
+    jac_raw(
+        m,
+        d,
+        jacp,
+        jacr,
+        arr3((*d).xipos.add(3 * body.max(0) as usize)),
+        body,
+    )
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_jacGeom(
+    m: *const mjModel,
+    d: *const mjData,
+    jacp: *mut mjtNum,
+    jacr: *mut mjtNum,
+    geom: c_int,
+) {
+    let g = geom.max(0) as usize;
+    jac_raw(
+        m,
+        d,
+        jacp,
+        jacr,
+        arr3((*d).geom_xpos.add(3 * g)),
+        *(*m).geom_bodyid.add(g),
+    )
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_jacSite(
+    m: *const mjModel,
+    d: *const mjData,
+    jacp: *mut mjtNum,
+    jacr: *mut mjtNum,
+    site: c_int,
+) {
+    let s = site.max(0) as usize;
+    jac_raw(
+        m,
+        d,
+        jacp,
+        jacr,
+        arr3((*d).site_xpos.add(3 * s)),
+        *(*m).site_bodyid.add(s),
+    )
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_jacSubtreeCom(
+    m: *const mjModel,
+    d: *mut mjData,
+    jacp: *mut mjtNum,
+    body: c_int,
+) {
+    run("mj_jacSubtreeCom", (), m, d, |mv, dv| {
+        let nv = mv.raw.nv as usize;
+        let mut out = vec![0.0; 3 * nv];
+        jacobian::jac_subtree_com(mv, dv, &mut out, body.max(0) as usize)?;
+        slice_mut(jacp, 3 * nv).copy_from_slice(&out);
+        Ok(())
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_jacPointAxis(
+    m: *const mjModel,
+    d: *mut mjData,
+    jacPoint: *mut mjtNum,
+    jacAxis: *mut mjtNum,
+    point: *const mjtNum,
+    axis: *const mjtNum,
+    body: c_int,
+) {
+    let (p, a) = (arr3(point), arr3(axis));
+    run("mj_jacPointAxis", (), m, d, |mv, dv| {
+        let nv = mv.raw.nv as usize;
+        let jp = (!jacPoint.is_null()).then(|| slice_mut(jacPoint, 3 * nv));
+        let ja = (!jacAxis.is_null()).then(|| slice_mut(jacAxis, 3 * nv));
+        jacobian::jac_point_axis(mv, dv, jp, ja, &p, &a, body.max(0) as usize)
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_fullM(m: *const mjModel, dst: *mut mjtNum, M: *const mjtNum) {
+    guard("mj_fullM", (), || {
+        let mv = Model::new(&*m);
+        let nv = mv.raw.nv as usize;
+        jacobian::full_m(&mv, slice_mut(dst, nv * nv), slice(M, mv.raw.nM as usize));
+        Ok(())
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_mulM(
+    m: *const mjModel,
+    d: *const mjData,
+    res: *mut mjtNum,
+    vec: *const mjtNum,
+) {
+    guard("mj_mulM", (), || {
+        let mv = Model::new(&*m);
+        let nv = mv.raw.nv as usize;
+        let v: Vec<f64> = slice(vec, nv).to_vec();
+        jacobian::mul_m(
+            &mv,
+            slice((*d).qM, mv.raw.nM as usize),
+            slice_mut(res, nv),
+            &v,
+        );
+        Ok(())
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_mulM2(
+    m: *const mjModel,
+    d: *const mjData,
+    res: *mut mjtNum,
+    vec: *const mjtNum,
+) {
+    guard("mj_mulM2", (), || {
+        let mv = Model::new(&*m);
+        let nv = mv.raw.nv as usize;
+        let v: Vec<f64> = slice(vec, nv).to_vec();
+        let qld = slice((*d).qLD, mv.raw.nM as usize);
+        let sqrt_inv = slice((*d).qLDiagSqrtInv, nv);
+        jacobian::mul_m2(&mv, qld, sqrt_inv, slice_mut(res, nv), &v);
+        Ok(())
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_addM(
+    m: *const mjModel,
+    d: *mut mjData,
+    dst: *mut mjtNum,
+    rownnz: *mut c_int,
+    rowadr: *mut c_int,
+    colind: *mut c_int,
+) {
+    run("mj_addM", (), m, d, |mv, dv| {
+        let nv = mv.raw.nv as usize;
+        if !rownnz.is_null() && !rowadr.is_null() && !colind.is_null() {
+            let rownnz = std::slice::from_raw_parts_mut(rownnz, nv);
+            let rowadr = std::slice::from_raw_parts(rowadr as *const c_int, nv);
+            // uncompressed rows: each may grow to nv entries
+            let len = rowadr
+                .iter()
+                .map(|&a| a.max(0) as usize + nv)
+                .max()
+                .unwrap_or(0);
+            let colind = std::slice::from_raw_parts_mut(colind, len);
+            return jacobian::add_m_sparse(mv, dv, slice_mut(dst, len), rownnz, rowadr, colind);
+        }
+        jacobian::add_m_dense(mv, dv.qM, slice_mut(dst, nv * nv));
+        Ok(())
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_applyFT(
+    m: *const mjModel,
+    d: *mut mjData,
+    force: *const mjtNum,
+    torque: *const mjtNum,
+    point: *const mjtNum,
+    body: c_int,
+    qfrc_target: *mut mjtNum,
+) {
+    let f = (!force.is_null()).then(|| arr3(force));
+    let t = (!torque.is_null()).then(|| arr3(torque));
+    let p = arr3(point);
+    run("mj_applyFT", (), m, d, |mv, dv| {
+        let nv = mv.raw.nv as usize;
+        let mut q: Vec<f64> = slice(qfrc_target, nv).to_vec();
+        forward::apply_ft(
+            mv,
+            dv,
+            f.as_ref(),
+            t.as_ref(),
+            &p,
+            body.max(0) as usize,
+            &mut q,
+        )?;
+        slice_mut(qfrc_target, nv).copy_from_slice(&q);
+        Ok(())
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_name2id(m: *const mjModel, type_: c_int, name: *const c_char) -> c_int {
+    if m.is_null() || name.is_null() {
+        return -1;
+    }
+    guard("mj_name2id", -1, || {
+        let mv = Model::new(&*m);
+        Ok(support::name2id(
+            &mv,
+            type_,
+            std::ffi::CStr::from_ptr(name).to_bytes(),
+        ))
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_id2name(m: *const mjModel, type_: c_int, id: c_int) -> *const c_char {
+    if m.is_null() {
+        return std::ptr::null();
+    }
+    guard("mj_id2name", std::ptr::null(), || {
+        let mv = Model::new(&*m);
+        Ok(match support::id2name(&mv, type_, id) {
+            Some(adr) => (*m).names.add(adr) as *const c_char,
+            None => std::ptr::null(),
+        })
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_differentiatePos(
+    m: *const mjModel,
+    qvel: *mut mjtNum,
+    dt: mjtNum,
+    qpos1: *const mjtNum,
+    qpos2: *const mjtNum,
+) {
+    guard("mj_differentiatePos", (), || {
+        let mv = Model::new(&*m);
+        let (nq, nv) = (mv.raw.nq as usize, mv.raw.nv as usize);
+        let (p1, p2): (Vec<f64>, Vec<f64>) = (slice(qpos1, nq).to_vec(), slice(qpos2, nq).to_vec());
+        integrate::differentiate_pos(&mv, slice_mut(qvel, nv), dt, &p1, &p2);
+        Ok(())
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_integratePos(
+    m: *const mjModel,
+    qpos: *mut mjtNum,
+    qvel: *const mjtNum,
+    dt: mjtNum,
+) {
+    guard("mj_integratePos", (), || {
+        let mv = Model::new(&*m);
+        let (nq, nv) = (mv.raw.nq as usize, mv.raw.nv as usize);
+        let v: Vec<f64> = slice(qvel, nv).to_vec();
+        integrate::integrate_pos(&mv, slice_mut(qpos, nq), &v, dt);
+        Ok(())
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_normalizeQuat(m: *const mjModel, qpos: *mut mjtNum) {
+    guard("mj_normalizeQuat", (), || {
+        let mv = Model::new(&*m);
+        kinematics::normalize_quat(&mv, slice_mut(qpos, mv.raw.nq as usize));
+        Ok(())
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_local2Global(
+    d: *mut mjData,
+    xpos: *mut mjtNum,
+    xmat: *mut mjtNum,
+    pos: *const mjtNum,
+    quat: *const mjtNum,
+    body: c_int,
+    sameframe: mjtByte,
+) {
+    use crate::math::*;
+    let b = body.max(0) as usize;
+    let d = &*d;
+    let (p, r): (Vec3, Mat3) = match sameframe {
+        0 => {
+            let bx = arr3(d.xpos.add(3 * b));
+            let bm: Mat3 = arr(slice(d.xmat.add(9 * b), 9));
+            let bq: Quat = arr(slice(d.xquat.add(4 * b), 4));
+            let p = if pos.is_null() {
+                [0.0; 3]
+            } else {
+                add3(&mul_mat_vec3(&bm, &arr3(pos)), &bx)
+            };
+            let r = if quat.is_null() {
+                [0.0; 9]
+            } else {
+                quat2mat(&mul_quat(&bq, &arr(slice(quat, 4))))
+            };
+            (p, r)
+        }
+        1 => (arr3(d.xpos.add(3 * b)), arr(slice(d.xmat.add(9 * b), 9))),
+        _ => (arr3(d.xipos.add(3 * b)), arr(slice(d.ximat.add(9 * b), 9))),
+    };
+    if !xpos.is_null() && !pos.is_null() {
+        slice_mut(xpos, 3).copy_from_slice(&p);
+    }
+    if !xmat.is_null() && !quat.is_null() {
+        slice_mut(xmat, 9).copy_from_slice(&r);
+    }
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_getTotalmass(m: *const mjModel) -> mjtNum {
+    guard("mj_getTotalmass", 0.0, || {
+        Ok(support::total_mass(&Model::new(&*m)))
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_setTotalmass(m: *mut mjModel, newmass: mjtNum) {
+    guard("mj_setTotalmass", (), || {
+        let mm = ModelMut::new(&mut *m);
+        support::set_total_mass(mm.body_mass, mm.body_inertia, newmass);
+        Ok(())
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_warning(d: *mut mjData, warning: c_int, info: c_int) {
+    guard("mj_warning", (), || {
+        support::warning(&mut *d, warning, info)
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_setConst(m: *mut mjModel, d: *mut mjData) {
+    if m.is_null() || d.is_null() {
+        errmem::error("mj_setConst: NULL model or data");
+        return;
+    }
+    guard("mj_setConst", (), || set_const_views(&mut *m, &mut *d))
+}
+
+/// Runs `f` with a temporary mjData made for `m`.
+pub fn with_temp_data(
+    m: &mut mjModel,
+    f: impl FnOnce(&mut mjModel, &mut mjData) -> Result<(), EngineError>,
+) -> Result<(), EngineError> {
+    let d = super::io::new_data(m).map_err(EngineError)?;
+    // SAFETY: d was just made for m and is freed right after.
+    let r = f(m, unsafe { &mut *d });
+    unsafe { alloc::delete_data(d) };
+    r
+}
+
+/// mj_setConst on views of (m, d).
+pub fn set_const_views(m: &mut mjModel, d: &mut mjData) -> Result<(), EngineError> {
+    use crate::engine::setconst::{compute, store, subtree_mass};
+    let nbody = m.nbody.max(0) as usize;
+    {
+        // SAFETY: m comes from mj_makeModel; the view lives only in this block.
+        let mut mm = unsafe { ModelMut::new(m) };
+        subtree_mass(&mut mm, nbody);
+    }
+    let consts = {
+        // SAFETY: as above; d was made for m.
+        let mv = unsafe { Model::new(&*m) };
+        let mut dv = unsafe { Data::new(&*m, d) };
+        compute(&mv, &mut dv)?
+    };
+    let mut stat = m.stat;
+    {
+        // SAFETY: as above.
+        let mut mm = unsafe { ModelMut::new(m) };
+        store(&mut mm, &mut stat, consts);
+    }
+    m.stat = stat;
+    Ok(())
+}

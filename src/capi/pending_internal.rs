@@ -8,16 +8,6 @@ use std::os::raw::{c_char, c_int, c_void};
 use super::pending;
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_EulerSkip(m: *const mjModel, d: *mut mjData, skipfactor: c_int) {
-    pending("mj_EulerSkip");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_factorI(m: *const mjModel, d: *mut mjData, M: *const mjtNum, qLD: *mut mjtNum, qLDiagInv: *mut mjtNum, qLDiagSqrtInv: *mut mjtNum) {
-    pending("mj_factorI");
-}
-
-#[no_mangle]
 pub unsafe extern "C" fn mj_implicit(m: *const mjModel, d: *mut mjData) {
     pending("mj_implicit");
 }
@@ -41,16 +31,6 @@ pub unsafe extern "C" fn mj_makeMSparse(m: *const mjModel, d: *mut mjData, rownn
 #[no_mangle]
 pub unsafe extern "C" fn mj_setMSparse(m: *const mjModel, d: *mut mjData, dst: *mut mjtNum, rownnz: *const c_int, rowadr: *const c_int, colind: *const c_int) {
     pending("mj_setMSparse");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_solveLD(m: *const mjModel, x: *mut mjtNum, y: *const mjtNum, n: c_int, qLD: *const mjtNum, qLDiagInv: *const mjtNum) {
-    pending("mj_solveLD");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_stepSkip(m: *const mjModel, d: *mut mjData, skipstage: c_int, skipsensor: c_int) {
-    pending("mj_stepSkip");
 }
 
 #[no_mangle]

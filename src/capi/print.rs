@@ -1,8 +1,8 @@
 //! Text dumps of models.
 
 use super::errmem::{c_stdout, cstr, warning};
-use crate::abi::print::{model_text, NumberFormat, FLOAT_FORMAT};
 use crate::abi::*;
+use crate::engine::print::{model_text, NumberFormat, FLOAT_FORMAT};
 use std::os::raw::c_char;
 
 /// Sends a dump to a file, or to C's stdout when no file is named.
@@ -82,7 +82,7 @@ pub unsafe extern "C" fn mj_printFormattedData(
     d.maxuse_stack = d.maxuse_stack.max(scratch);
     let text = super::guard("mj_printData", None, || {
         let dv = view::Data::new(m, &mut *d);
-        Ok(Some(crate::abi::print::data_text(
+        Ok(Some(crate::engine::print::data_text(
             view::Model::new(m),
             &dv,
             &fmt,

@@ -1,1 +1,136 @@
-//! C entry points.
+//! C entry points of the MJCF loader: `mj_loadXML`.
+
+use crate::abi::alloc::make_model;
+use crate::abi::view::ModelMut;
+use crate::abi::*;
+use crate::capi::errmem;
+use crate::compiler;
+use crate::xml::{reader, schema, tree};
+use std::os::raw::{c_char, c_int};
+
+/// Copies `msg` into the caller's error buffer (truncated, NUL-terminated).
+unsafe fn set_error(error: *mut c_char, error_sz: c_int, msg: &str) {
+    if error.is_null() || error_sz <= 0 {
+        return;
+    }
+    let n = msg.len().min(error_sz as usize - 1);
+    std::ptr::copy_nonoverlapping(msg.as_ptr() as *const c_char, error, n);
+    *error.add(n) = 0;
+}
+
+/// File contents from the VFS (by exact name) or from disk.
+unsafe fn load_text(filename: &str, vfs: *const mjVFS) -> Result<Vec<u8>, String> {
+    if !vfs.is_null() {
+        let v = &*vfs;
+        let n = (v.nfile.max(0) as usize).min(v.filename.len());
+        for i in 0..n {
+            let name = std::ffi::CStr::from_ptr(v.filename[i].as_ptr()).to_string_lossy();
+            if name == filename && !v.filedata[i].is_null() {
+                let size = v.filesize[i].max(0) as usize;
+                return Ok(std::slice::from_raw_parts(v.filedata[i] as *const u8, size).to_vec());
+            }
+        }
+    }
+    std::fs::read(filename).map_err(|_| {
+        format!("XML parse error 3:\nError=XML_ERROR_FILE_NOT_FOUND ErrorID=3 (0x3) Line number=0: filename={filename}\n")
+    })
+}
+
+/// XML text to a model description.
+fn parse(bytes: &[u8]) -> Result<compiler::spec::ModelSpec, String> {
+    let text = std::str::from_utf8(bytes)
+        .map_err(|e| format!("XML parse error: invalid UTF-8 ({e})\n"))?;
+    let text = text.trim_end_matches('\0');
+    let root = tree::parse(text)?;
+    if root.name.eq_ignore_ascii_case("robot") {
+        return Err("XML Error: URDF models are not supported by this loader yet".into());
+    }
+    if !root.name.eq_ignore_ascii_case("mujoco") {
+        return Err(format!(
+            "XML Error: Unrecognized XML model type: '{}'",
+            root.name
+        ));
+    }
+    fn find_include(e: &tree::Element) -> Option<&tree::Element> {
+        if e.name == "include" {
+            return Some(e);
+        }
+        e.children.iter().find_map(find_include)
+    }
+    if let Some(inc) = find_include(&root) {
+        return Err(reader::xerr(
+            inc,
+            "'include' is not supported by this MJCF reader yet",
+        ));
+    }
+    schema::check(&root)?;
+    reader::read(&root)
+}
+
+thread_local! {
+    /// Last warning raised while a model compiles (2.2.2 returns it in the error buffer).
+    static COMPILE_WARNING: std::cell::RefCell<String> = const { std::cell::RefCell::new(String::new()) };
+}
+
+unsafe extern "C" fn keep_warning(msg: *const c_char) {
+    let text = crate::capi::errmem::cstr(msg).into_owned();
+    COMPILE_WARNING.with(|w| *w.borrow_mut() = text);
+}
+
+/// Parses, compiles and allocates; returns the model or the error text.
+unsafe fn load(filename: *const c_char, vfs: *const mjVFS) -> Result<*mut mjModel, String> {
+    if filename.is_null() {
+        return Err("mjParseXML: filename argument required\n".into());
+    }
+    let fname = std::ffi::CStr::from_ptr(filename)
+        .to_string_lossy()
+        .into_owned();
+    let spec = parse(&load_text(&fname, vfs)?)?;
+    // from here on, as in 2.2.2's compiler, warnings go to the error buffer
+    errmem::_mjPRIVATE__set_tls_warning_fn(Some(keep_warning));
+    // SAFETY: all-zero bits are a valid mjModel header (null pointers, zero sizes).
+    let blank: mjModel = std::mem::zeroed();
+    let compiled = compiler::compile(spec, blank).map_err(|e| e.render())?;
+    let m = make_model(&compiled.header).map_err(|e| format!("Error: {e}"))?;
+    (*m).opt = compiled.option;
+    (*m).vis = compiled.visual;
+    {
+        // SAFETY: m was just made by make_model and is not aliased.
+        let mut mm = ModelMut::new(&mut *m);
+        compiler::fill(&compiled, &mut mm);
+    }
+    if let Err(e) = compiler::set_const(&mut *m) {
+        crate::abi::alloc::delete_model(m);
+        return Err(format!("Error: engine error: {e}"));
+    }
+    compiler::finish(&compiled, &mut (*m).stat);
+    Ok(m)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_loadXML(
+    filename: *const c_char,
+    vfs: *const mjVFS,
+    error: *mut c_char,
+    error_sz: c_int,
+) -> *mut mjModel {
+    COMPILE_WARNING.with(|w| w.borrow_mut().clear());
+    let saved = errmem::_mjPRIVATE__get_tls_warning_fn();
+    let result = std::panic::catch_unwind(|| load(filename, vfs));
+    errmem::_mjPRIVATE__set_tls_warning_fn(saved);
+    match result {
+        Ok(Ok(m)) => {
+            let warning = COMPILE_WARNING.with(|w| std::mem::take(&mut *w.borrow_mut()));
+            set_error(error, error_sz, &warning);
+            m
+        }
+        Ok(Err(msg)) => {
+            set_error(error, error_sz, &msg);
+            std::ptr::null_mut()
+        }
+        Err(_) => {
+            set_error(error, error_sz, "Error: internal error in mj_loadXML");
+            std::ptr::null_mut()
+        }
+    }
+}

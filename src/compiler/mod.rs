@@ -1,1 +1,80 @@
-//! Model description to `mjModel`.
+//! Model description to `mjModel`: object compilation, sizes, array filling.
+//!
+//! `compile` does all work that needs no engine; `fill` writes the arrays of a model allocated
+//! with the sizes it found; `set_const` runs the engine's qpos0-dependent constants.
+
+pub mod frame;
+pub mod objects;
+pub mod spec;
+mod tree;
+
+use crate::abi::view::{EngineError, ModelMut};
+use crate::abi::{mjModel, mjStatistic};
+pub use tree::Compiled;
+
+/// Compiler error: message and, when known, the object (name, id, line) it concerns.
+#[derive(Debug, Clone)]
+pub struct CError {
+    pub msg: String,
+    pub obj: Option<(String, usize, i32)>,
+}
+
+impl CError {
+    pub fn msg(msg: &str) -> Self {
+        CError {
+            msg: msg.to_string(),
+            obj: None,
+        }
+    }
+    pub fn at(msg: String, name: &str, id: usize, line: i32) -> Self {
+        CError {
+            msg,
+            obj: Some((name.to_string(), id, line)),
+        }
+    }
+    /// The text 2.2.2 puts in the error buffer.
+    pub fn render(&self) -> String {
+        let mut s = format!("Error: {}", self.msg);
+        if let Some((name, id, line)) = &self.obj {
+            if *line >= 0 {
+                s += &format!("\nObject name = {name}, id = {id}, line = {line}, column = -1");
+            } else {
+                s += &format!("\nObject name = {name}, id = {id}");
+            }
+        }
+        s
+    }
+}
+
+/// Compiles a model description. `blank` is an all-zero mjModel; the result holds it with the
+/// sizes set (`header`), ready for `make_model`, and the data for `fill`.
+pub fn compile(spec: spec::ModelSpec, blank: mjModel) -> Result<Compiled, CError> {
+    tree::compile(spec, blank)
+}
+
+/// Writes every array of `m` (allocated from `c.header`).
+pub fn fill(c: &Compiled, m: &mut ModelMut) {
+    c.fill(m);
+}
+
+/// Constants that depend on qpos0 (mj_setConst), computed by the engine.
+pub fn set_const(m: &mut mjModel) -> Result<(), EngineError> {
+    crate::engine::setconst::set_const(m)
+}
+
+/// Applies the user's `<statistic>` overrides after `set_const`.
+pub fn finish(c: &Compiled, stat: &mut mjStatistic) {
+    let o = &c.stat_override;
+    let set = |dst: &mut f64, v: f64| {
+        if !v.is_nan() {
+            *dst = v;
+        }
+    };
+    set(&mut stat.extent, o[3]);
+    set(&mut stat.meaninertia, o[0]);
+    set(&mut stat.meanmass, o[1]);
+    set(&mut stat.meansize, o[2]);
+    if !c.center[0].is_nan() {
+        stat.center = c.center;
+    }
+}

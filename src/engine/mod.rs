@@ -1,1 +1,55 @@
 //! The simulation pipeline, one module per stage of MuJoCo's computation chapter.
+
+#![allow(clippy::needless_range_loop)] // index loops mirror the reference algorithms
+
+pub mod actuation;
+pub mod collision;
+pub mod constraint;
+pub mod forward;
+pub mod inertia;
+pub mod integrate;
+pub mod jacobian;
+pub mod kinematics;
+pub mod linalg;
+pub mod passive;
+pub mod print;
+pub mod rne;
+pub mod setconst;
+pub mod support;
+pub mod transmission;
+pub mod velocity;
+
+pub use crate::abi::view::{Data, EngineError, Model};
+
+use crate::abi::*;
+
+/// Joint type codes as stored in `jnt_type`.
+pub const JNT_FREE: i32 = mjtJoint_::mjJNT_FREE as i32;
+pub const JNT_BALL: i32 = mjtJoint_::mjJNT_BALL as i32;
+pub const JNT_SLIDE: i32 = mjtJoint_::mjJNT_SLIDE as i32;
+pub const JNT_HINGE: i32 = mjtJoint_::mjJNT_HINGE as i32;
+
+/// Largest magnitude accepted in qpos, qvel, qacc and ctrl.
+pub const MAXVAL: f64 = 1e10;
+/// Smallest value used in denominators.
+pub const MINVAL: f64 = 1e-15;
+
+/// Is the disable flag set?
+pub fn disabled(m: &Model, flag: mjtDisableBit_) -> bool {
+    m.raw.opt.disableflags & flag as i32 != 0
+}
+
+/// Is the enable flag set?
+pub fn enabled(m: &Model, flag: mjtEnableBit_) -> bool {
+    m.raw.opt.enableflags & flag as i32 != 0
+}
+
+/// Counts one pass through a timed stage (no timer callback: durations stay 0).
+pub fn tick(d: &mut Data, timer: mjtTimer_) {
+    d.raw.timer[timer as usize].number += 1;
+}
+
+/// Shorthand for a "not implemented" error.
+pub fn not_implemented(what: &str) -> EngineError {
+    EngineError(format!("{what} not implemented"))
+}

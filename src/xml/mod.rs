@@ -1,1 +1,5 @@
-//! MJCF and URDF readers: XML into a model description.
+//! MJCF reader: XML text into a model description (`crate::compiler::spec`), defaults applied.
+
+pub mod reader;
+pub mod schema;
+pub mod tree;

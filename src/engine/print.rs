@@ -1,8 +1,8 @@
 //! Text dump of a model in 2.2.2's `mj_printModel` layout: sizes, options, statistics, then every
 //! array of the X-macro list grouped by the object it describes.
 
-use super::view::Model;
-use super::*;
+use crate::abi::view::{self, Model};
+use crate::abi::*;
 use std::ffi::CString;
 use std::fmt::Write as _;
 
@@ -37,15 +37,25 @@ macro_rules! column {
     };
 }
 
+/// Columns per object of an X-macro row.
+macro_rules! width {
+    ($m:expr, @ $f:ident * $k:literal) => {
+        ($m.$f.max(0) as usize) * $k
+    };
+    ($m:expr, $k:expr) => {
+        $k as usize
+    };
+}
+
 macro_rules! model_columns {
     ($(($t:ident, $name:ident, $d1:ident, $($d2:tt)+)),* $(,)?) => {
         /// (name, object-count field, columns per object, data) of every model array.
         fn columns<'a>(mv: &Model<'a>) -> Vec<(&'static str, &'static str, usize, Column<'a>)> {
-            vec![$((stringify!($name), stringify!($d1), dim2!(mv.raw, $($d2)+), column!($t, mv.$name())),)*]
+            vec![$((stringify!($name), stringify!($d1), width!(mv.raw, $($d2)+), column!($t, mv.$name())),)*]
         }
     };
 }
-mjmodel_pointers!(model_columns);
+crate::mjmodel_pointers!(model_columns);
 
 /// printf-style formatting of one number with a validated single-conversion format.
 pub struct NumberFormat(CString);
@@ -503,17 +513,7 @@ pub fn is_sparse(m: &mjModel) -> bool {
 fn tree_to_dense(mv: Model, packed: &[f64]) -> Vec<f64> {
     let nv = mv.raw.nv.max(0) as usize;
     let mut full = vec![0.0; nv * nv];
-    let mut adr = 0;
-    for i in 0..nv {
-        let mut j = i as i32;
-        while j >= 0 {
-            let ju = j as usize;
-            full[i * nv + ju] = packed[adr];
-            full[ju * nv + i] = packed[adr];
-            j = mv.dof_parentid()[ju];
-            adr += 1;
-        }
-    }
+    super::jacobian::full_m(&mv, &mut full, packed);
     full
 }
 

@@ -1,0 +1,558 @@
+//! Model description: what an MJCF file says, with defaults applied, before compilation.
+//!
+//! Undefined values are NaN where the compiler must know whether they were given.
+
+use crate::abi::alloc::{default_option, default_solimp, default_solref, default_visual};
+use crate::abi::{mjOption, mjVisual};
+
+pub const NAN: f64 = f64::NAN;
+
+/// Source position of an object, for error messages (-1: unknown).
+pub type Line = i32;
+
+/// Alternative orientation specifications; first entry NaN when not given.
+#[derive(Debug, Clone, Copy)]
+pub struct Alt {
+    pub axisangle: [f64; 4],
+    pub xyaxes: [f64; 6],
+    pub zaxis: [f64; 3],
+    pub euler: [f64; 3],
+    pub fullinertia: [f64; 6],
+}
+
+impl Default for Alt {
+    fn default() -> Self {
+        Alt {
+            axisangle: [NAN; 4],
+            xyaxes: [NAN; 6],
+            zaxis: [NAN; 3],
+            euler: [NAN; 3],
+            fullinertia: [NAN; 6],
+        }
+    }
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum JointType {
+    Free = 0,
+    Ball = 1,
+    Slide = 2,
+    Hinge = 3,
+}
+
+impl JointType {
+    pub fn nq(self) -> usize {
+        [7, 4, 1, 1][self as usize]
+    }
+    pub fn nv(self) -> usize {
+        [6, 3, 1, 1][self as usize]
+    }
+}
+
+#[derive(Debug, Clone)]
+pub struct Joint {
+    pub name: String,
+    pub line: Line,
+    pub kind: JointType,
+    pub group: i32,
+    pub pos: [f64; 3],
+    pub axis: [f64; 3],
+    pub springdamper: [f64; 2],
+    /// 0 false, 1 true, 2 auto
+    pub limited: i32,
+    pub solref_limit: [f64; 2],
+    pub solimp_limit: [f64; 5],
+    pub solref_friction: [f64; 2],
+    pub solimp_friction: [f64; 5],
+    pub stiffness: f64,
+    pub range: [f64; 2],
+    pub margin: f64,
+    pub reference: f64,
+    pub springref: f64,
+    pub armature: f64,
+    pub damping: f64,
+    pub frictionloss: f64,
+    pub user: Vec<f64>,
+}
+
+impl Default for Joint {
+    fn default() -> Self {
+        Joint {
+            name: String::new(),
+            line: -1,
+            kind: JointType::Hinge,
+            group: 0,
+            pos: [0.0; 3],
+            axis: [0.0, 0.0, 1.0],
+            springdamper: [0.0; 2],
+            limited: 2,
+            solref_limit: default_solref(),
+            solimp_limit: default_solimp(),
+            solref_friction: default_solref(),
+            solimp_friction: default_solimp(),
+            stiffness: 0.0,
+            range: [0.0; 2],
+            margin: 0.0,
+            reference: 0.0,
+            springref: 0.0,
+            armature: 0.0,
+            damping: 0.0,
+            frictionloss: 0.0,
+            user: Vec::new(),
+        }
+    }
+}
+
+#[derive(Debug, Clone)]
+pub struct Geom {
+    pub name: String,
+    pub line: Line,
+    /// mjtGeom value
+    pub kind: i32,
+    pub size: [f64; 3],
+    pub contype: i32,
+    pub conaffinity: i32,
+    pub condim: i32,
+    pub group: i32,
+    pub priority: i32,
+    pub friction: [f64; 3],
+    pub solmix: f64,
+    pub solref: [f64; 2],
+    pub solimp: [f64; 5],
+    pub margin: f64,
+    pub gap: f64,
+    pub rgba: [f32; 4],
+    /// NaN: not given
+    pub mass: f64,
+    pub density: f64,
+    pub fromto: [f64; 6],
+    pub pos: [f64; 3],
+    pub quat: [f64; 4],
+    pub alt: Alt,
+    pub fluid_switch: bool,
+    pub fluid_coefs: [f64; 5],
+    /// Attributes the compiler does not handle yet (material, mesh, hfield, shellinertia).
+    pub unsupported: Option<&'static str>,
+    pub user: Vec<f64>,
+}
+
+impl Default for Geom {
+    fn default() -> Self {
+        Geom {
+            name: String::new(),
+            line: -1,
+            kind: 2,
+            size: [0.0; 3],
+            contype: 1,
+            conaffinity: 1,
+            condim: 3,
+            group: 0,
+            priority: 0,
+            friction: [1.0, 0.005, 0.0001],
+            solmix: 1.0,
+            solref: default_solref(),
+            solimp: default_solimp(),
+            margin: 0.0,
+            gap: 0.0,
+            rgba: [0.5, 0.5, 0.5, 1.0],
+            mass: NAN,
+            density: 1000.0,
+            fromto: [NAN; 6],
+            pos: [0.0; 3],
+            quat: [1.0, 0.0, 0.0, 0.0],
+            alt: Alt::default(),
+            fluid_switch: false,
+            fluid_coefs: [0.5, 0.25, 1.5, 1.0, 1.0],
+            unsupported: None,
+            user: Vec::new(),
+        }
+    }
+}
+
+#[derive(Debug, Clone)]
+pub struct Site {
+    pub name: String,
+    pub line: Line,
+    pub kind: i32,
+    pub size: [f64; 3],
+    pub group: i32,
+    pub pos: [f64; 3],
+    pub quat: [f64; 4],
+    pub rgba: [f32; 4],
+    pub fromto: [f64; 6],
+    pub alt: Alt,
+    pub unsupported: Option<&'static str>,
+    pub user: Vec<f64>,
+}
+
+impl Default for Site {
+    fn default() -> Self {
+        Site {
+            name: String::new(),
+            line: -1,
+            kind: 2,
+            size: [0.005; 3],
+            group: 0,
+            pos: [0.0; 3],
+            quat: [1.0, 0.0, 0.0, 0.0],
+            rgba: [0.5, 0.5, 0.5, 1.0],
+            fromto: [NAN; 6],
+            alt: Alt::default(),
+            unsupported: None,
+            user: Vec::new(),
+        }
+    }
+}
+
+#[derive(Debug, Clone)]
+pub struct Actuator {
+    pub name: String,
+    pub line: Line,
+    pub group: i32,
+    pub ctrllimited: i32,
+    pub forcelimited: i32,
+    pub actlimited: i32,
+    pub ctrlrange: [f64; 2],
+    pub forcerange: [f64; 2],
+    pub actrange: [f64; 2],
+    pub lengthrange: [f64; 2],
+    pub gear: [f64; 6],
+    pub cranklength: f64,
+    /// mjtTrn value; -1 undefined (mjTRN_UNDEFINED is 1000 in 2.2.2)
+    pub trntype: i32,
+    pub dyntype: i32,
+    pub gaintype: i32,
+    pub biastype: i32,
+    pub dynprm: [f64; 10],
+    pub gainprm: [f64; 10],
+    pub biasprm: [f64; 10],
+    pub target: String,
+    pub slidersite: String,
+    pub refsite: String,
+    pub user: Vec<f64>,
+}
+
+impl Default for Actuator {
+    fn default() -> Self {
+        let mut one = [0.0; 10];
+        one[0] = 1.0;
+        Actuator {
+            name: String::new(),
+            line: -1,
+            group: 0,
+            ctrllimited: 2,
+            forcelimited: 2,
+            actlimited: 2,
+            ctrlrange: [0.0; 2],
+            forcerange: [0.0; 2],
+            actrange: [0.0; 2],
+            lengthrange: [0.0; 2],
+            gear: [1.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+            cranklength: 0.0,
+            trntype: TRN_UNDEFINED,
+            dyntype: 0,
+            gaintype: 0,
+            biastype: 0,
+            dynprm: one,
+            gainprm: one,
+            biasprm: [0.0; 10],
+            target: String::new(),
+            slidersite: String::new(),
+            refsite: String::new(),
+            user: Vec::new(),
+        }
+    }
+}
+
+pub const TRN_UNDEFINED: i32 = 1000;
+
+#[derive(Debug, Clone)]
+pub struct Camera {
+    pub name: String,
+    pub line: Line,
+    /// mjtCamLight value
+    pub mode: i32,
+    pub target: String,
+    pub pos: [f64; 3],
+    pub quat: [f64; 4],
+    pub alt: Alt,
+    pub fovy: f64,
+    pub ipd: f64,
+    pub user: Vec<f64>,
+}
+
+impl Default for Camera {
+    fn default() -> Self {
+        Camera {
+            name: String::new(),
+            line: -1,
+            mode: 0,
+            target: String::new(),
+            pos: [0.0; 3],
+            quat: [1.0, 0.0, 0.0, 0.0],
+            alt: Alt::default(),
+            fovy: 45.0,
+            ipd: 0.068,
+            user: Vec::new(),
+        }
+    }
+}
+
+#[derive(Debug, Clone)]
+pub struct Light {
+    pub name: String,
+    pub line: Line,
+    pub mode: i32,
+    pub target: String,
+    pub directional: bool,
+    pub castshadow: bool,
+    pub active: bool,
+    pub pos: [f64; 3],
+    pub dir: [f64; 3],
+    pub attenuation: [f32; 3],
+    pub cutoff: f32,
+    pub exponent: f32,
+    pub ambient: [f32; 3],
+    pub diffuse: [f32; 3],
+    pub specular: [f32; 3],
+}
+
+impl Default for Light {
+    fn default() -> Self {
+        Light {
+            name: String::new(),
+            line: -1,
+            mode: 0,
+            target: String::new(),
+            directional: false,
+            castshadow: true,
+            active: true,
+            pos: [0.0; 3],
+            dir: [0.0, 0.0, -1.0],
+            attenuation: [1.0, 0.0, 0.0],
+            cutoff: 45.0,
+            exponent: 10.0,
+            ambient: [0.0; 3],
+            diffuse: [0.7; 3],
+            specular: [0.3; 3],
+        }
+    }
+}
+
+/// Explicit contact pair (`<contact><pair>`).
+#[derive(Debug, Clone)]
+pub struct Pair {
+    pub name: String,
+    pub line: Line,
+    pub geom1: String,
+    pub geom2: String,
+    pub condim: i32,
+    pub solref: [f64; 2],
+    pub solimp: [f64; 5],
+    pub margin: f64,
+    pub gap: f64,
+    pub friction: [f64; 5],
+}
+
+impl Default for Pair {
+    fn default() -> Self {
+        Pair {
+            name: String::new(),
+            line: -1,
+            geom1: String::new(),
+            geom2: String::new(),
+            condim: 3,
+            solref: default_solref(),
+            solimp: default_solimp(),
+            margin: 0.0,
+            gap: 0.0,
+            friction: [1.0, 1.0, 0.005, 0.0001, 0.0001],
+        }
+    }
+}
+
+/// Excluded body pair (`<contact><exclude>`).
+#[derive(Debug, Clone, Default)]
+pub struct Exclude {
+    pub name: String,
+    pub line: Line,
+    pub body1: String,
+    pub body2: String,
+}
+
+/// A default class: the values new elements of each kind start from.
+#[derive(Debug, Clone, Default)]
+pub struct DefaultClass {
+    pub name: String,
+    pub parent: Option<usize>,
+    pub joint: Joint,
+    pub geom: Geom,
+    pub site: Site,
+    pub camera: Camera,
+    pub light: Light,
+    pub pair: Pair,
+    pub actuator: Actuator,
+}
+
+#[derive(Debug, Clone)]
+pub struct Body {
+    pub name: String,
+    pub line: Line,
+    /// NaN first entry: not given
+    pub pos: [f64; 3],
+    pub quat: [f64; 4],
+    pub alt: Alt,
+    pub mocap: bool,
+    pub explicit_inertial: bool,
+    pub ipos: [f64; 3],
+    pub iquat: [f64; 4],
+    pub ialt: Alt,
+    pub mass: f64,
+    pub inertia: [f64; 3],
+    pub user: Vec<f64>,
+    pub joints: Vec<Joint>,
+    pub geoms: Vec<Geom>,
+    pub sites: Vec<Site>,
+    pub cameras: Vec<Camera>,
+    pub lights: Vec<Light>,
+    pub bodies: Vec<Body>,
+}
+
+impl Default for Body {
+    fn default() -> Self {
+        Body {
+            name: String::new(),
+            line: -1,
+            pos: [NAN, 0.0, 0.0],
+            quat: [1.0, 0.0, 0.0, 0.0],
+            alt: Alt::default(),
+            mocap: false,
+            explicit_inertial: false,
+            ipos: [NAN, 0.0, 0.0],
+            iquat: [1.0, 0.0, 0.0, 0.0],
+            ialt: Alt::default(),
+            mass: 0.0,
+            inertia: [0.0; 3],
+            user: Vec::new(),
+            joints: Vec::new(),
+            geoms: Vec::new(),
+            sites: Vec::new(),
+            cameras: Vec::new(),
+            lights: Vec::new(),
+            bodies: Vec::new(),
+        }
+    }
+}
+
+#[derive(Debug, Clone, Default)]
+pub struct Key {
+    pub name: String,
+    pub time: f64,
+    pub qpos: Vec<f64>,
+    pub qvel: Vec<f64>,
+    pub act: Vec<f64>,
+    pub mpos: Vec<f64>,
+    pub mquat: Vec<f64>,
+    pub ctrl: Vec<f64>,
+}
+
+/// `inertiafromgeom` setting.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum InertiaFromGeom {
+    False = 0,
+    True = 1,
+    Auto = 2,
+}
+
+/// `<compiler>` settings that the slice uses.
+#[derive(Debug, Clone)]
+pub struct CompilerOpts {
+    pub autolimits: bool,
+    pub boundmass: f64,
+    pub boundinertia: f64,
+    pub settotalmass: f64,
+    pub balanceinertia: bool,
+    pub global: bool,
+    pub degree: bool,
+    pub eulerseq: [u8; 3],
+    pub discardvisual: bool,
+    pub inertiafromgeom: InertiaFromGeom,
+    pub inertiagrouprange: [i32; 2],
+}
+
+impl Default for CompilerOpts {
+    fn default() -> Self {
+        CompilerOpts {
+            autolimits: false,
+            boundmass: 0.0,
+            boundinertia: 0.0,
+            settotalmass: -1.0,
+            balanceinertia: false,
+            global: false,
+            degree: true,
+            eulerseq: *b"xyz",
+            discardvisual: false,
+            inertiafromgeom: InertiaFromGeom::Auto,
+            inertiagrouprange: [0, 5],
+        }
+    }
+}
+
+/// Everything the reader found.
+#[derive(Debug, Clone)]
+pub struct ModelSpec {
+    pub modelname: String,
+    pub compiler: CompilerOpts,
+    pub option: mjOption,
+    pub visual: mjVisual,
+    pub njmax: i32,
+    pub nconmax: i32,
+    pub nstack: i32,
+    pub nuserdata: i32,
+    pub nkey: i32,
+    /// nuser_body, jnt, geom, site, cam, tendon, actuator, sensor (-1: automatic)
+    pub nuser: [i32; 8],
+    /// meaninertia, meanmass, meansize, extent overrides (NaN: computed)
+    pub stat_override: [f64; 4],
+    pub center: [f64; 3],
+    pub defaults: Vec<DefaultClass>,
+    pub world: Body,
+    pub actuators: Vec<Actuator>,
+    pub pairs: Vec<Pair>,
+    pub excludes: Vec<Exclude>,
+    pub keys: Vec<Key>,
+}
+
+impl Default for ModelSpec {
+    fn default() -> Self {
+        let world = Body {
+            name: "world".into(),
+            pos: [0.0; 3],
+            ipos: [0.0; 3],
+            ..Body::default()
+        };
+        ModelSpec {
+            modelname: "MuJoCo Model".into(),
+            compiler: CompilerOpts::default(),
+            option: default_option(),
+            visual: default_visual(),
+            njmax: -1,
+            nconmax: -1,
+            nstack: -1,
+            nuserdata: 0,
+            nkey: 0,
+            nuser: [-1; 8],
+            stat_override: [NAN; 4],
+            center: [NAN, 0.0, 0.0],
+            defaults: vec![DefaultClass {
+                name: "main".into(),
+                ..DefaultClass::default()
+            }],
+            world,
+            actuators: Vec::new(),
+            pairs: Vec::new(),
+            excludes: Vec::new(),
+            keys: Vec::new(),
+        }
+    }
+}

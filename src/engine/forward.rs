@@ -1,0 +1,299 @@
+//! The forward pipeline and mj_step: position, velocity, actuation, acceleration, constraint.
+
+use super::actuation::fwd_actuation;
+use super::collision::collision;
+use super::constraint::make_constraint;
+use super::inertia::{crb, factor_m, solve_ld};
+use super::integrate::{euler, runge_kutta};
+use super::jacobian::jac;
+use super::kinematics::{camlight, com_pos, kinematics};
+use super::linalg::{add_to, is_bad, mul_mat_t_vec, mul_mat_vec, row};
+use super::passive::passive;
+use super::rne::rne_bias;
+use super::support::{energy_pos, energy_vel, reset_data, warning};
+use super::transmission::transmission;
+use super::velocity::com_vel;
+use super::{disabled, enabled, not_implemented, tick, Data, EngineError, Model};
+use crate::abi::*;
+use mjtTimer_::*;
+
+/// Tendon lengths and moments: only the tendon-free case exists so far.
+pub fn tendon(m: &Model) -> Result<(), EngineError> {
+    if m.raw.ntendon > 0 {
+        return Err(not_implemented("tendons are"));
+    }
+    Ok(())
+}
+
+/// Sensors are not part of this slice.
+fn sensors(m: &Model) -> Result<(), EngineError> {
+    if m.raw.nsensor > 0 && !disabled(m, mjtDisableBit_::mjDSBL_SENSOR) {
+        return Err(not_implemented("sensors are"));
+    }
+    Ok(())
+}
+
+/// Position-dependent stage (mj_fwdPosition).
+pub fn fwd_position(m: &Model, d: &mut Data) -> Result<(), EngineError> {
+    kinematics(m, d)?;
+    com_pos(m, d)?;
+    camlight(m, d, false);
+    tendon(m)?;
+    tick(d, mjTIMER_POS_KINEMATICS);
+    crb(m, d, true);
+    factor_m(m, d)?;
+    tick(d, mjTIMER_POS_INERTIA);
+    collision(m, d)?;
+    tick(d, mjTIMER_POS_COLLISION);
+    make_constraint(m, d)?;
+    transmission(m, d)?;
+    tick(d, mjTIMER_POS_MAKE);
+    tick(d, mjTIMER_POS_PROJECT);
+    tick(d, mjTIMER_POSITION);
+    Ok(())
+}
+
+/// Velocity-dependent stage (mj_fwdVelocity).
+pub fn fwd_velocity(m: &Model, d: &mut Data) -> Result<(), EngineError> {
+    let (nu, nv) = (m.raw.nu as usize, m.raw.nv as usize);
+    mul_mat_vec(d.actuator_velocity, d.actuator_moment, d.qvel, nu, nv);
+    com_vel(m, d);
+    passive(m, d)?;
+    rne_bias(m, d)?;
+    tick(d, mjTIMER_VELOCITY);
+    Ok(())
+}
+
+/// Adds the Cartesian force and torque at `point` on `body` to `qfrc` (mj_applyFT).
+pub fn apply_ft(
+    m: &Model,
+    d: &mut Data,
+    force: Option<&[f64; 3]>,
+    torque: Option<&[f64; 3]>,
+    point: &[f64; 3],
+    body: usize,
+    qfrc: &mut [f64],
+) -> Result<(), EngineError> {
+    let nv = m.raw.nv as usize;
+    if body >= m.raw.nbody as usize {
+        return Err(EngineError(format!("Invalid body {body} in applyFT")));
+    }
+    d.arena.scope(|a| -> Result<(), EngineError> {
+        let jacp = a.alloc(3 * nv)?;
+        let jacr = a.alloc(3 * nv)?;
+        let qforce = a.alloc(nv)?;
+        jac(
+            m,
+            d.cdof,
+            d.subtree_com,
+            point,
+            body,
+            Some(&mut *jacp),
+            Some(&mut *jacr),
+        );
+        if let Some(f) = force {
+            mul_mat_t_vec(qforce, jacp, f, 3, nv);
+            add_to(&mut qfrc[..nv], qforce);
+        }
+        if let Some(t) = torque {
+            mul_mat_t_vec(qforce, jacr, t, 3, nv);
+            add_to(&mut qfrc[..nv], qforce);
+        }
+        Ok(())
+    })
+}
+
+/// qfrc += forces of xfrc_applied (mj_xfrcAccumulate).
+pub fn xfrc_accumulate(m: &Model, d: &mut Data, qfrc: &mut [f64]) -> Result<(), EngineError> {
+    for i in 1..m.raw.nbody as usize {
+        let x = row::<6>(d.xfrc_applied, i);
+        if x.iter().any(|&v| v != 0.0) {
+            let point = row::<3>(d.xipos, i);
+            apply_ft(
+                m,
+                d,
+                Some(&[x[0], x[1], x[2]]),
+                Some(&[x[3], x[4], x[5]]),
+                &point,
+                i,
+                qfrc,
+            )?;
+        }
+    }
+    Ok(())
+}
+
+/// qfrc_smooth and qacc_smooth (mj_fwdAcceleration).
+pub fn fwd_acceleration(m: &Model, d: &mut Data) -> Result<(), EngineError> {
+    let nv = m.raw.nv as usize;
+    for i in 0..nv {
+        d.qfrc_smooth[i] = d.qfrc_passive[i] - d.qfrc_bias[i];
+    }
+    add_to(d.qfrc_smooth, d.qfrc_applied);
+    add_to(d.qfrc_smooth, d.qfrc_actuator);
+    let smooth = std::mem::take(&mut d.qfrc_smooth);
+    let r = xfrc_accumulate(m, d, &mut *smooth);
+    d.qfrc_smooth = smooth;
+    r?;
+    solve_ld(m, d.qacc_smooth, Some(d.qfrc_smooth), 1, d.qLD, d.qLDiagInv);
+    tick(d, mjTIMER_ACCELERATION);
+    Ok(())
+}
+
+/// mj_fwdConstraint without constraints: qacc = qacc_smooth.
+pub fn fwd_constraint(m: &Model, d: &mut Data) -> Result<(), EngineError> {
+    if d.raw.nefc != 0 {
+        return Err(not_implemented("the constraint solver is"));
+    }
+    let _ = m;
+    d.qacc.copy_from_slice(d.qacc_smooth);
+    d.qacc_warmstart.copy_from_slice(d.qacc_smooth);
+    d.qfrc_constraint.fill(0.0);
+    d.raw.solver_iter = 0;
+    Ok(())
+}
+
+/// Resets and warns when qpos has a bad value (mj_checkPos).
+pub fn check_pos(m: &Model, d: &mut Data) -> Result<(), EngineError> {
+    if let Some(i) = d.qpos.iter().position(|&x| is_bad(x)) {
+        bad_state(m, d, mjtWarning_::mjWARN_BADQPOS, i)?;
+    }
+    Ok(())
+}
+
+/// Resets and warns when qvel has a bad value (mj_checkVel).
+pub fn check_vel(m: &Model, d: &mut Data) -> Result<(), EngineError> {
+    if let Some(i) = d.qvel.iter().position(|&x| is_bad(x)) {
+        bad_state(m, d, mjtWarning_::mjWARN_BADQVEL, i)?;
+    }
+    Ok(())
+}
+
+/// Resets, warns and recomputes when qacc has a bad value (mj_checkAcc).
+pub fn check_acc(m: &Model, d: &mut Data) -> Result<(), EngineError> {
+    if let Some(i) = d.qacc.iter().position(|&x| is_bad(x)) {
+        bad_state(m, d, mjtWarning_::mjWARN_BADQACC, i)?;
+        forward(m, d)?;
+    }
+    Ok(())
+}
+
+fn bad_state(m: &Model, d: &mut Data, kind: mjtWarning_, i: usize) -> Result<(), EngineError> {
+    warning(d.raw, kind as i32, i as i32)?;
+    reset_data(m, d);
+    let w = &mut d.raw.warning[kind as usize];
+    w.number += 1;
+    w.lastinfo = i as i32;
+    Ok(())
+}
+
+/// Forward dynamics, skipping stages up to `skipstage` (mj_forwardSkip).
+pub fn forward_skip(
+    m: &Model,
+    d: &mut Data,
+    skipstage: i32,
+    skipsensor: bool,
+) -> Result<(), EngineError> {
+    let energy = enabled(m, mjtEnableBit_::mjENBL_ENERGY);
+    if skipstage < mjtStage_::mjSTAGE_POS as i32 {
+        fwd_position(m, d)?;
+        if !skipsensor {
+            sensors(m)?;
+        }
+        if energy {
+            energy_pos(m, d);
+        }
+    }
+    if skipstage < mjtStage_::mjSTAGE_VEL as i32 {
+        fwd_velocity(m, d)?;
+        if !skipsensor {
+            sensors(m)?;
+        }
+        if energy {
+            energy_vel(m, d)?;
+        }
+    }
+    fwd_actuation(m, d)?;
+    fwd_acceleration(m, d)?;
+    fwd_constraint(m, d)?;
+    if !skipsensor {
+        sensors(m)?;
+    }
+    tick(d, mjTIMER_FORWARD);
+    Ok(())
+}
+
+/// mj_forward.
+pub fn forward(m: &Model, d: &mut Data) -> Result<(), EngineError> {
+    forward_skip(m, d, mjtStage_::mjSTAGE_NONE as i32, false)
+}
+
+fn check_fwdinv(m: &Model) -> Result<(), EngineError> {
+    if enabled(m, mjtEnableBit_::mjENBL_FWDINV) {
+        return Err(not_implemented("forward/inverse comparison (fwdinv) is"));
+    }
+    Ok(())
+}
+
+/// mj_step: forward dynamics, then the selected integrator.
+pub fn step(m: &Model, d: &mut Data) -> Result<(), EngineError> {
+    step_skip(m, d, mjtStage_::mjSTAGE_NONE as i32, false)
+}
+
+/// mj_step reusing stages up to `skipstage` (mj_stepSkip).
+pub fn step_skip(
+    m: &Model,
+    d: &mut Data,
+    skipstage: i32,
+    skipsensor: bool,
+) -> Result<(), EngineError> {
+    check_pos(m, d)?;
+    check_vel(m, d)?;
+    forward_skip(m, d, skipstage, skipsensor)?;
+    check_acc(m, d)?;
+    check_fwdinv(m)?;
+    match m.raw.opt.integrator {
+        x if x == mjtIntegrator_::mjINT_EULER as i32 => {
+            euler(m, d, skipstage >= mjtStage_::mjSTAGE_POS as i32)?
+        }
+        x if x == mjtIntegrator_::mjINT_RK4 as i32 => runge_kutta(m, d, 4)?,
+        x if x == mjtIntegrator_::mjINT_IMPLICIT as i32 => {
+            return Err(not_implemented("the implicit integrator is"))
+        }
+        _ => return Err(EngineError("Invalid integrator".into())),
+    }
+    tick(d, mjTIMER_STEP);
+    Ok(())
+}
+
+/// First half of mj_step, before the user sets controls and applied forces (mj_step1).
+pub fn step1(m: &Model, d: &mut Data) -> Result<(), EngineError> {
+    check_pos(m, d)?;
+    check_vel(m, d)?;
+    fwd_position(m, d)?;
+    sensors(m)?;
+    energy_pos(m, d);
+    fwd_velocity(m, d)?;
+    sensors(m)?;
+    energy_vel(m, d)?;
+    tick(d, mjTIMER_STEP);
+    Ok(())
+}
+
+/// Second half of mj_step: actuation to integration; RK4 falls back to Euler (mj_step2).
+pub fn step2(m: &Model, d: &mut Data) -> Result<(), EngineError> {
+    fwd_actuation(m, d)?;
+    fwd_acceleration(m, d)?;
+    fwd_constraint(m, d)?;
+    sensors(m)?;
+    check_acc(m, d)?;
+    check_fwdinv(m)?;
+    if m.raw.opt.integrator == mjtIntegrator_::mjINT_IMPLICIT as i32 {
+        return Err(not_implemented("the implicit integrator is"));
+    }
+    euler(m, d, false)?;
+    // step2 does not count as a separate step
+    d.raw.timer[mjTIMER_STEP as usize].number -= 1;
+    tick(d, mjTIMER_STEP);
+    Ok(())
+}

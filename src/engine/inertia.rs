@@ -1,0 +1,171 @@
+//! Joint-space inertia: composite rigid bodies (qM), its sparse L'DL factorization and solves.
+
+use super::linalg::{add_to, dot6, row};
+use super::support::warning;
+use super::{Data, EngineError, Model, MINVAL};
+use crate::abi::{mjData, mjtWarning_};
+use crate::math::*;
+
+/// Composite rigid body inertias and qM (mj_crbSkip); `skipsimple` copies dof_M0 for simple dofs.
+pub fn crb(m: &Model, d: &mut Data, skipsimple: bool) {
+    let nbody = m.raw.nbody as usize;
+    let nv = m.raw.nv as usize;
+    d.crb.copy_from_slice(d.cinert);
+    for i in (1..nbody).rev() {
+        let p = m.body_parentid()[i] as usize;
+        if p > 0 {
+            let (lo, hi) = d.crb.split_at_mut(10 * i);
+            add_to(&mut lo[10 * p..10 * p + 10], &hi[..10]);
+        }
+    }
+    d.qM.fill(0.0);
+    for i in (0..nv).rev() {
+        let mut adr = m.dof_Madr()[i] as usize;
+        if skipsimple && m.dof_simplenum()[i] != 0 {
+            d.qM[adr] = m.dof_M0()[i];
+            continue;
+        }
+        d.qM[adr] = m.dof_armature()[i];
+        let b = m.dof_bodyid()[i] as usize;
+        let tmp = mul_inert_vec(&d.crb[10 * b..10 * b + 10], &row(d.cdof, i));
+        let mut j = i as i32;
+        while j >= 0 {
+            let ju = j as usize;
+            d.qM[adr] += dot6(&d.cdof[6 * ju..6 * ju + 6], &tmp);
+            j = m.dof_parentid()[ju];
+            adr += 1;
+        }
+    }
+}
+
+/// Sparse L'*D*L factorization of an inertia-like matrix (mj_factorI).
+pub fn factor_i(
+    m: &Model,
+    raw: &mut mjData,
+    mat: &[f64],
+    qld: &mut [f64],
+    diag_inv: &mut [f64],
+    sqrt_inv: Option<&mut [f64]>,
+) -> Result<(), EngineError> {
+    let nv = m.raw.nv as usize;
+    let madr = m.dof_Madr();
+    qld.copy_from_slice(&mat[..qld.len()]);
+    for k in (0..nv).rev() {
+        let akk = madr[k] as usize;
+        if qld[akk] < MINVAL {
+            warning(raw, mjtWarning_::mjWARN_INERTIA as i32, k as i32)?;
+            qld[akk] = MINVAL;
+        }
+        if m.dof_simplenum()[k] != 0 {
+            continue;
+        }
+        let mut aki = akk + 1;
+        let mut i = m.dof_parentid()[k];
+        while i >= 0 {
+            let iu = i as usize;
+            let tmp = qld[aki] / qld[akk];
+            let ai = madr[iu] as usize;
+            let cnt = (madr[iu + 1] - madr[iu]) as usize;
+            let s = -tmp;
+            let (head, tail) = qld.split_at_mut(aki);
+            for (x, y) in head[ai..ai + cnt].iter_mut().zip(&tail[..cnt]) {
+                *x += y * s;
+            }
+            qld[aki] = tmp;
+            i = m.dof_parentid()[iu];
+            aki += 1;
+        }
+    }
+    for i in 0..nv {
+        diag_inv[i] = 1.0 / qld[madr[i] as usize];
+    }
+    if let Some(s) = sqrt_inv {
+        for i in 0..nv {
+            s[i] = 1.0 / qld[madr[i] as usize].sqrt();
+        }
+    }
+    Ok(())
+}
+
+/// Factorizes qM into qLD, qLDiagInv, qLDiagSqrtInv (mj_factorM).
+pub fn factor_m(m: &Model, d: &mut Data) -> Result<(), EngineError> {
+    factor_i(m, d.raw, d.qM, d.qLD, d.qLDiagInv, Some(d.qLDiagSqrtInv))
+}
+
+/// Solves L'*D*L x = x in place for one vector.
+fn solve_ld1(m: &Model, x: &mut [f64], qld: &[f64], diag_inv: &[f64]) {
+    let nv = m.raw.nv as usize;
+    for i in (0..nv).rev() {
+        let tmp = x[i];
+        if m.dof_simplenum()[i] == 0 && tmp != 0.0 {
+            let mut adr = m.dof_Madr()[i] as usize + 1;
+            let mut j = m.dof_parentid()[i];
+            while j >= 0 {
+                let ju = j as usize;
+                x[ju] -= qld[adr] * tmp;
+                adr += 1;
+                j = m.dof_parentid()[ju];
+            }
+        }
+    }
+    for i in 0..nv {
+        x[i] *= diag_inv[i];
+    }
+    for i in 0..nv {
+        if m.dof_simplenum()[i] == 0 {
+            let mut adr = m.dof_Madr()[i] as usize + 1;
+            let mut j = m.dof_parentid()[i];
+            let mut tmp = x[i];
+            while j >= 0 {
+                let ju = j as usize;
+                tmp -= qld[adr] * x[ju];
+                adr += 1;
+                j = m.dof_parentid()[ju];
+            }
+            x[i] = tmp;
+        }
+    }
+}
+
+/// x = inv(L'*D*L) * y for `n` vectors of length nv (mj_solveLD); x and y may be the same.
+pub fn solve_ld(
+    m: &Model,
+    x: &mut [f64],
+    y: Option<&[f64]>,
+    n: usize,
+    qld: &[f64],
+    diag_inv: &[f64],
+) {
+    let nv = m.raw.nv as usize;
+    if let Some(y) = y {
+        x[..n * nv].copy_from_slice(&y[..n * nv]);
+    }
+    for v in 0..n {
+        solve_ld1(m, &mut x[v * nv..(v + 1) * nv], qld, diag_inv);
+    }
+}
+
+/// x = sqrt(inv(D)) * inv(L') * y for `n` vectors (mj_solveM2).
+pub fn solve_m2(m: &Model, x: &mut [f64], y: &[f64], n: usize, qld: &[f64], sqrt_inv: &[f64]) {
+    let nv = m.raw.nv as usize;
+    x[..n * nv].copy_from_slice(&y[..n * nv]);
+    for v in 0..n {
+        let x = &mut x[v * nv..(v + 1) * nv];
+        for i in (0..nv).rev() {
+            let tmp = x[i];
+            if m.dof_simplenum()[i] == 0 && tmp != 0.0 {
+                let mut adr = m.dof_Madr()[i] as usize + 1;
+                let mut j = m.dof_parentid()[i];
+                while j >= 0 {
+                    let ju = j as usize;
+                    x[ju] -= qld[adr] * tmp;
+                    adr += 1;
+                    j = m.dof_parentid()[ju];
+                }
+            }
+        }
+        for i in 0..nv {
+            x[i] *= sqrt_inv[i];
+        }
+    }
+}

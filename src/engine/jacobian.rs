@@ -1,0 +1,360 @@
+//! Jacobians of points and frames; products with the sparse inertia matrix.
+
+use super::linalg::{add_to_scl, row};
+use super::{Data, EngineError, Model};
+use crate::math::*;
+
+/// Jacobian rows (3 x nv each) of a global point attached to `body` (mj_jac):
+/// translation into `jacp`, rotation into `jacr`.
+pub fn jac(
+    m: &Model,
+    cdof: &[f64],
+    subtree_com: &[f64],
+    point: &Vec3,
+    body: usize,
+    mut jacp: Option<&mut [f64]>,
+    mut jacr: Option<&mut [f64]>,
+) {
+    let nv = m.raw.nv as usize;
+    if let Some(j) = jacp.as_deref_mut() {
+        j[..3 * nv].fill(0.0);
+    }
+    if let Some(j) = jacr.as_deref_mut() {
+        j[..3 * nv].fill(0.0);
+    }
+    let offset = sub3(point, &row(subtree_com, m.body_rootid()[body] as usize));
+    let mut b = body;
+    while b != 0 && m.body_dofnum()[b] == 0 {
+        b = m.body_parentid()[b] as usize;
+    }
+    if b == 0 {
+        return;
+    }
+    let mut da = m.body_dofadr()[b] + m.body_dofnum()[b] - 1;
+    while da >= 0 {
+        let i = da as usize;
+        let c = row::<6>(cdof, i);
+        if let Some(j) = jacr.as_deref_mut() {
+            j[i] = c[0];
+            j[i + nv] = c[1];
+            j[i + 2 * nv] = c[2];
+        }
+        if let Some(j) = jacp.as_deref_mut() {
+            let t = cross(&[c[0], c[1], c[2]], &offset);
+            j[i] = c[3] + t[0];
+            j[i + nv] = c[4] + t[1];
+            j[i + 2 * nv] = c[5] + t[2];
+        }
+        da = m.dof_parentid()[i];
+    }
+}
+
+/// Jacobian of the subtree center of mass of `body` (mj_jacSubtreeCom).
+pub fn jac_subtree_com(
+    m: &Model,
+    d: &mut Data,
+    jacp: &mut [f64],
+    body: usize,
+) -> Result<(), EngineError> {
+    let nv = m.raw.nv as usize;
+    let nbody = m.raw.nbody as usize;
+    jacp[..3 * nv].fill(0.0);
+    d.arena.scope(|a| -> Result<(), EngineError> {
+        let jb = a.alloc(3 * nv)?;
+        for b in body..nbody {
+            if b > body && (m.body_parentid()[b] as usize) < body {
+                break;
+            }
+            jac(
+                m,
+                d.cdof,
+                d.subtree_com,
+                &row(d.xipos, b),
+                b,
+                Some(&mut *jb),
+                None,
+            );
+            add_to_scl(&mut jacp[..3 * nv], jb, m.body_mass()[b]);
+        }
+        Ok(())
+    })?;
+    let s = 1.0 / m.body_subtreemass()[body];
+    for x in &mut jacp[..3 * nv] {
+        *x *= s;
+    }
+    Ok(())
+}
+
+/// Point Jacobian and the Jacobian of a rotating axis (mj_jacPointAxis).
+pub fn jac_point_axis(
+    m: &Model,
+    d: &mut Data,
+    jac_point: Option<&mut [f64]>,
+    jac_axis: Option<&mut [f64]>,
+    point: &Vec3,
+    axis: &Vec3,
+    body: usize,
+) -> Result<(), EngineError> {
+    let nv = m.raw.nv as usize;
+    d.arena.scope(|a| -> Result<(), EngineError> {
+        let jacr = a.alloc(3 * nv)?;
+        match jac_point {
+            Some(p) => jac(
+                m,
+                d.cdof,
+                d.subtree_com,
+                point,
+                body,
+                Some(p),
+                Some(&mut *jacr),
+            ),
+            None => {
+                let p = a.alloc(3 * nv)?;
+                jac(
+                    m,
+                    d.cdof,
+                    d.subtree_com,
+                    point,
+                    body,
+                    Some(p),
+                    Some(&mut *jacr),
+                )
+            }
+        }
+        if let Some(ja) = jac_axis {
+            for i in 0..nv {
+                ja[i] = jacr[nv + i] * axis[2] - jacr[2 * nv + i] * axis[1];
+                ja[nv + i] = jacr[2 * nv + i] * axis[0] - jacr[i] * axis[2];
+                ja[2 * nv + i] = jacr[i] * axis[1] - jacr[nv + i] * axis[0];
+            }
+        }
+        Ok(())
+    })
+}
+
+/// Dense nv x nv matrix from the sparse inertia layout (mj_fullM).
+pub fn full_m(m: &Model, dst: &mut [f64], mat: &[f64]) {
+    let nv = m.raw.nv as usize;
+    dst[..nv * nv].fill(0.0);
+    let mut adr = 0;
+    for i in 0..nv {
+        let mut j = i as i32;
+        while j >= 0 {
+            let ju = j as usize;
+            dst[i * nv + ju] = mat[adr];
+            dst[ju * nv + i] = mat[adr];
+            j = m.dof_parentid()[ju];
+            adr += 1;
+        }
+    }
+}
+
+/// res = M * vec with M in the sparse inertia layout (mj_mulM).
+pub fn mul_m(m: &Model, qm: &[f64], res: &mut [f64], vec: &[f64]) {
+    let nv = m.raw.nv as usize;
+    res[..nv].fill(0.0);
+    for i in 0..nv {
+        let mut adr = m.dof_Madr()[i] as usize;
+        if m.dof_simplenum()[i] != 0 {
+            res[i] = qm[adr] * vec[i];
+        } else {
+            res[i] += qm[adr] * vec[i];
+            let mut j = m.dof_parentid()[i];
+            adr += 1;
+            while j >= 0 {
+                let ju = j as usize;
+                res[i] += qm[adr] * vec[ju];
+                res[ju] += qm[adr] * vec[i];
+                j = m.dof_parentid()[ju];
+                adr += 1;
+            }
+        }
+    }
+}
+
+/// res = M^(1/2) * vec using the factorization (mj_mulM2).
+pub fn mul_m2(m: &Model, qld: &[f64], sqrt_inv: &[f64], res: &mut [f64], vec: &[f64]) {
+    let nv = m.raw.nv as usize;
+    res[..nv].fill(0.0);
+    for i in 0..nv {
+        if m.dof_simplenum()[i] != 0 {
+            res[i] = vec[i] / sqrt_inv[i];
+        } else {
+            let mut adr = m.dof_Madr()[i] as usize;
+            res[i] += vec[i] / sqrt_inv[i];
+            let mut j = m.dof_parentid()[i];
+            adr += 1;
+            while j >= 0 {
+                let ju = j as usize;
+                res[i] += qld[adr] * vec[ju];
+                j = m.dof_parentid()[ju];
+                adr += 1;
+            }
+        }
+    }
+}
+
+/// dst += M, dst dense nv x nv (mj_addM without sparse arguments).
+pub fn add_m_dense(m: &Model, qm: &[f64], dst: &mut [f64]) {
+    let nv = m.raw.nv as usize;
+    for i in 0..nv {
+        let mut adr = m.dof_Madr()[i] as usize;
+        let mut j = i as i32;
+        while j >= 0 {
+            let ju = j as usize;
+            dst[i * nv + ju] += qm[adr];
+            if ju < i {
+                dst[ju * nv + i] += qm[adr];
+            }
+            if m.dof_simplenum()[i] != 0 {
+                break;
+            }
+            j = m.dof_parentid()[ju];
+            adr += 1;
+        }
+    }
+}
+
+/// Merges the sorted sparse row (src, src_ind) into (dst, dst_ind): dst = dst + src
+/// (mju_combineSparse with a = b = 1); returns the new nonzero count.
+fn combine_sparse(
+    dst: &mut [f64],
+    dst_ind: &mut [i32],
+    dst_nnz: usize,
+    src: &[f64],
+    src_ind: &[i32],
+    buf: &mut [f64],
+    buf_ind: &mut [i32],
+) -> usize {
+    if dst_nnz == src.len() && dst_ind[..dst_nnz] == *src_ind {
+        for (x, y) in dst[..dst_nnz].iter_mut().zip(src) {
+            *x = 1.0 * *x + 1.0 * y;
+        }
+        return dst_nnz;
+    }
+    buf[..dst_nnz].copy_from_slice(&dst[..dst_nnz]);
+    buf_ind[..dst_nnz].copy_from_slice(&dst_ind[..dst_nnz]);
+    let end = i32::MAX; // past every column index, as n + 1 is in 2.2.2
+    let (mut bi, mut si, mut nnz) = (0, 0, 0);
+    let at = |ind: &[i32], k: usize, len: usize| if k < len { ind[k] } else { end };
+    let (mut badr, mut sadr) = (at(buf_ind, 0, dst_nnz), at(src_ind, 0, src.len()));
+    while bi < dst_nnz || si < src.len() {
+        if badr == sadr {
+            dst[nnz] = 1.0 * buf[bi] + 1.0 * src[si];
+            dst_ind[nnz] = badr;
+            bi += 1;
+            si += 1;
+            badr = at(buf_ind, bi, dst_nnz);
+            sadr = at(src_ind, si, src.len());
+        } else if badr < sadr {
+            dst[nnz] = 1.0 * buf[bi];
+            dst_ind[nnz] = badr;
+            bi += 1;
+            badr = at(buf_ind, bi, dst_nnz);
+        } else {
+            dst[nnz] = 1.0 * src[si];
+            dst_ind[nnz] = sadr;
+            si += 1;
+            sadr = at(src_ind, si, src.len());
+        }
+        nnz += 1;
+    }
+    nnz
+}
+
+/// dst += M for a sparse uncompressed destination (mj_addM with row descriptors).
+pub fn add_m_sparse(
+    m: &Model,
+    d: &mut Data,
+    dst: &mut [f64],
+    rownnz: &mut [i32],
+    rowadr: &[i32],
+    colind: &mut [i32],
+) -> Result<(), EngineError> {
+    let nv = m.raw.nv as usize;
+    let madr = m.dof_Madr();
+    let simple = m.dof_simplenum();
+    let mut nsimple = 0;
+    for i in 0..nv {
+        if simple[i] == 0 {
+            continue;
+        }
+        nsimple += 1;
+        let adr = rowadr[i] as usize;
+        if rownnz[i] == 0 {
+            colind[adr] = i as i32;
+            dst[adr] = d.qM[madr[i] as usize];
+            rownnz[i] = 1;
+        } else {
+            let end = adr + rownnz[i] as usize;
+            match (adr..end).find(|&k| colind[k] == i as i32) {
+                Some(k) => dst[k] += d.qM[madr[i] as usize],
+                None => {
+                    return Err(EngineError(
+                        "mj_addM sparse: dst row expected to be empty".into(),
+                    ))
+                }
+            }
+        }
+    }
+    if nsimple == nv {
+        return Ok(());
+    }
+    let qm = &*d.qM;
+    d.arena.scope(|a| -> Result<(), EngineError> {
+        let mat = a.alloc(nv * nv)?;
+        let mcol = a.alloc_int(nv * nv)?;
+        let mnnz = a.alloc_int(nv)?;
+        let buf = a.alloc(nv)?;
+        let buf_ind = a.alloc_int(nv)?;
+        // lower triangle of M, rows in ascending column order
+        for i in 0..nv {
+            if simple[i] != 0 {
+                continue;
+            }
+            let mut adr = madr[i] as usize;
+            let mut j = i as i32;
+            let mut cnt = 0;
+            while j >= 0 {
+                mat[i * nv + cnt] = qm[adr];
+                mcol[i * nv + cnt] = j;
+                cnt += 1;
+                adr += 1;
+                j = m.dof_parentid()[j as usize];
+            }
+            mnnz[i] = cnt as i32;
+            mat[i * nv..i * nv + cnt].reverse();
+            mcol[i * nv..i * nv + cnt].reverse();
+        }
+        // mirror to the upper triangle
+        for i in 1..nv {
+            if simple[i] != 0 {
+                continue;
+            }
+            for k in nv * i..nv * i + mnnz[i] as usize - 1 {
+                let c = mcol[k] as usize;
+                let dst_k = nv * c + mnnz[c] as usize;
+                mnnz[c] += 1;
+                mat[dst_k] = mat[k];
+                mcol[dst_k] = i as i32;
+            }
+        }
+        for i in 0..nv {
+            if simple[i] != 0 {
+                continue;
+            }
+            let adr = rowadr[i] as usize;
+            let cnt = mnnz[i] as usize;
+            rownnz[i] = combine_sparse(
+                &mut dst[adr..],
+                &mut colind[adr..],
+                rownnz[i] as usize,
+                &mat[i * nv..i * nv + cnt],
+                &mcol[i * nv..i * nv + cnt],
+                buf,
+                buf_ind,
+            ) as i32;
+        }
+        Ok(())
+    })
+}

@@ -1,0 +1,50 @@
+//! Passive forces: joint springs (quaternion springs for ball and free joints), dof dampers.
+
+use super::{
+    disabled, not_implemented, Data, EngineError, Model, JNT_BALL, JNT_FREE, JNT_HINGE, JNT_SLIDE,
+};
+use crate::abi::mjtDisableBit_;
+use crate::math::*;
+
+/// qfrc_passive (mj_passive, without tendons and fluid forces).
+pub fn passive(m: &Model, d: &mut Data) -> Result<(), EngineError> {
+    d.qfrc_passive.fill(0.0);
+    if disabled(m, mjtDisableBit_::mjDSBL_PASSIVE) {
+        return Ok(());
+    }
+    let f = &mut *d.qfrc_passive;
+    for j in 0..m.raw.njnt as usize {
+        let k = m.jnt_stiffness()[j];
+        let mut padr = m.jnt_qposadr()[j] as usize;
+        let mut dadr = m.jnt_dofadr()[j] as usize;
+        match m.jnt_type()[j] {
+            t @ (JNT_FREE | JNT_BALL) => {
+                if t == JNT_FREE {
+                    for i in 0..3 {
+                        f[dadr + i] -= k * (d.qpos[padr + i] - m.qpos_spring()[padr + i]);
+                    }
+                    dadr += 3;
+                    padr += 3;
+                }
+                let dif = sub_quat(&q4(&d.qpos[padr..]), &q4(&m.qpos_spring()[padr..]));
+                for i in 0..3 {
+                    f[dadr + i] -= k * dif[i];
+                }
+            }
+            JNT_SLIDE | JNT_HINGE => {
+                f[dadr] -= k * (d.qpos[padr] - m.qpos_spring()[padr]);
+            }
+            _ => {}
+        }
+    }
+    for i in 0..m.raw.nv as usize {
+        f[i] -= m.dof_damping()[i] * d.qvel[i];
+    }
+    if m.raw.ntendon > 0 {
+        return Err(not_implemented("tendon spring-dampers are"));
+    }
+    if m.raw.opt.viscosity > 0.0 || m.raw.opt.density > 0.0 {
+        return Err(not_implemented("fluid forces (density, viscosity) are"));
+    }
+    Ok(())
+}

@@ -1,0 +1,350 @@
+//! Frames, names, masses, warnings, energy and data reset.
+
+use super::linalg::{dot, put, row};
+use super::{
+    disabled, enabled, Data, EngineError, Model, JNT_BALL, JNT_FREE, JNT_HINGE, JNT_SLIDE,
+};
+use crate::abi::*;
+use crate::math::*;
+
+/// Global pose of a frame given relative to `body` (mj_local2Global); `sameframe` 1 copies
+/// the body frame, 2 the inertial frame.
+pub fn local_to_global(
+    d: &Data,
+    pos: &Vec3,
+    quat: &Quat,
+    body: usize,
+    sameframe: u8,
+) -> (Vec3, Mat3) {
+    match sameframe {
+        0 => {
+            let p = add3(&mul_mat_vec3(&row(d.xmat, body), pos), &row(d.xpos, body));
+            let q = mul_quat(&row(d.xquat, body), quat);
+            (p, quat2mat(&q))
+        }
+        1 => (row(d.xpos, body), row(d.xmat, body)),
+        _ => (row(d.xipos, body), row(d.ximat, body)),
+    }
+}
+
+/// Counts a warning; reports it through mju_warning the first time (mj_warning).
+pub fn warning(d: &mut mjData, kind: i32, info: i32) -> Result<(), EngineError> {
+    if !(0..mjtWarning_::mjNWARNING as i32).contains(&kind) {
+        return Err(EngineError(format!("Invalid warning type {kind}")));
+    }
+    let w = &mut d.warning[kind as usize];
+    w.lastinfo = info;
+    if w.number == 0 {
+        let text = format!(
+            "{} Time = {:.4}.",
+            crate::math::misc::warning_text(kind, info),
+            d.time
+        );
+        crate::capi::errmem::warning(&text);
+    }
+    d.warning[kind as usize].number += 1;
+    Ok(())
+}
+
+trait Zero {
+    fn zero() -> Self;
+}
+impl Zero for f64 {
+    fn zero() -> Self {
+        0.0
+    }
+}
+impl Zero for f32 {
+    fn zero() -> Self {
+        0.0
+    }
+}
+impl Zero for i32 {
+    fn zero() -> Self {
+        0
+    }
+}
+impl Zero for u8 {
+    fn zero() -> Self {
+        0
+    }
+}
+impl Zero for i8 {
+    fn zero() -> Self {
+        0
+    }
+}
+impl Zero for mjContact {
+    fn zero() -> Self {
+        mjContact {
+            dist: 0.0,
+            pos: [0.0; 3],
+            frame: [0.0; 9],
+            includemargin: 0.0,
+            friction: [0.0; 5],
+            solref: [0.0; mjNREF],
+            solimp: [0.0; mjNIMP],
+            mu: 0.0,
+            H: [0.0; 36],
+            dim: 0,
+            geom1: 0,
+            geom2: 0,
+            exclude: 0,
+            efc_address: 0,
+        }
+    }
+}
+
+fn zero_fill<T: Zero>(s: &mut [T]) {
+    for x in s {
+        *x = T::zero();
+    }
+}
+
+macro_rules! zero_data_arrays {
+    ($(($t:ident, $name:ident, $d1:ident, $($d2:tt)+)),* $(,)?) => {
+        fn zero_arrays(d: &mut Data) {
+            $(zero_fill(d.$name);)*
+        }
+    };
+}
+crate::mjdata_pointers!(zero_data_arrays);
+
+/// mj_resetData on the views: clear header and arrays, qpos = qpos0, mocap from bodies.
+pub fn reset_data(m: &Model, d: &mut Data) {
+    clear_header(d);
+    zero_arrays(d);
+    reset_state(m, d);
+}
+
+/// Clears the header: stack use, diagnostics, sizes, time, energy.
+pub fn clear_header(d: &mut Data) {
+    let r = &mut *d.raw;
+    r.pstack = 0;
+    r.maxuse_stack = 0;
+    r.maxuse_con = 0;
+    r.maxuse_efc = 0;
+    for w in r.warning.iter_mut() {
+        w.lastinfo = 0;
+        w.number = 0;
+    }
+    for t in r.timer.iter_mut() {
+        t.duration = 0.0;
+        t.number = 0;
+    }
+    for s in r.solver.iter_mut() {
+        s.improvement = 0.0;
+        s.gradient = 0.0;
+        s.lineslope = 0.0;
+        s.nactive = 0;
+        s.nchange = 0;
+        s.neval = 0;
+        s.nupdate = 0;
+    }
+    r.solver_iter = 0;
+    r.solver_nnz = 0;
+    r.solver_fwdinv = [0.0; 2];
+    r.ne = 0;
+    r.nf = 0;
+    r.nefc = 0;
+    r.ncon = 0;
+    r.time = 0.0;
+    r.energy = [0.0; 2];
+}
+
+/// Zeroes the inputs and the arrays mj_forward does not fill; qpos = qpos0, mocap from bodies.
+pub fn reset_state(m: &Model, d: &mut Data) {
+    for a in [
+        &mut d.qpos,
+        &mut d.qvel,
+        &mut d.act,
+        &mut d.ctrl,
+        &mut d.qfrc_applied,
+        &mut d.xfrc_applied,
+    ] {
+        a.fill(0.0);
+    }
+    for a in [
+        &mut d.qacc,
+        &mut d.qacc_warmstart,
+        &mut d.act_dot,
+        &mut d.userdata,
+        &mut d.sensordata,
+    ] {
+        a.fill(0.0);
+    }
+    d.mocap_pos.fill(0.0);
+    d.mocap_quat.fill(0.0);
+    d.qpos.copy_from_slice(m.qpos0());
+    for (i, &id) in m.body_mocapid().iter().enumerate() {
+        if id >= 0 {
+            put(d.mocap_pos, id as usize, &row::<3>(m.body_pos(), i));
+            put(d.mocap_quat, id as usize, &row::<4>(m.body_quat(), i));
+        }
+    }
+}
+
+/// mj_resetDataKeyframe: reset, then take time, state, mocap poses and controls from keyframe
+/// `key` when it exists.
+pub fn reset_data_keyframe(m: &Model, d: &mut Data, key: i32) {
+    reset_data(m, d);
+    if key < 0 || key >= m.raw.nkey {
+        return;
+    }
+    let k = key as usize;
+    d.raw.time = m.key_time()[k];
+    let rows = [
+        (&mut d.qpos, m.key_qpos()),
+        (&mut d.qvel, m.key_qvel()),
+        (&mut d.act, m.key_act()),
+        (&mut d.mocap_pos, m.key_mpos()),
+        (&mut d.mocap_quat, m.key_mquat()),
+        (&mut d.ctrl, m.key_ctrl()),
+    ];
+    for (dst, src) in rows {
+        let n = dst.len();
+        dst.copy_from_slice(&src[k * n..(k + 1) * n]);
+    }
+}
+
+/// Names of objects of `objtype`: (count, name addresses).
+fn name_table<'a>(m: &Model<'a>, objtype: i32) -> &'a [i32] {
+    use mjtObj_::*;
+    let t = |o: mjtObj_| o as i32;
+    match objtype {
+        x if x == t(mjOBJ_BODY) || x == t(mjOBJ_XBODY) => m.name_bodyadr(),
+        x if x == t(mjOBJ_JOINT) => m.name_jntadr(),
+        x if x == t(mjOBJ_GEOM) => m.name_geomadr(),
+        x if x == t(mjOBJ_SITE) => m.name_siteadr(),
+        x if x == t(mjOBJ_CAMERA) => m.name_camadr(),
+        x if x == t(mjOBJ_LIGHT) => m.name_lightadr(),
+        x if x == t(mjOBJ_MESH) => m.name_meshadr(),
+        x if x == t(mjOBJ_SKIN) => m.name_skinadr(),
+        x if x == t(mjOBJ_HFIELD) => m.name_hfieldadr(),
+        x if x == t(mjOBJ_TEXTURE) => m.name_texadr(),
+        x if x == t(mjOBJ_MATERIAL) => m.name_matadr(),
+        x if x == t(mjOBJ_PAIR) => m.name_pairadr(),
+        x if x == t(mjOBJ_EXCLUDE) => m.name_excludeadr(),
+        x if x == t(mjOBJ_EQUALITY) => m.name_eqadr(),
+        x if x == t(mjOBJ_TENDON) => m.name_tendonadr(),
+        x if x == t(mjOBJ_ACTUATOR) => m.name_actuatoradr(),
+        x if x == t(mjOBJ_SENSOR) => m.name_sensoradr(),
+        x if x == t(mjOBJ_NUMERIC) => m.name_numericadr(),
+        x if x == t(mjOBJ_TEXT) => m.name_textadr(),
+        x if x == t(mjOBJ_TUPLE) => m.name_tupleadr(),
+        x if x == t(mjOBJ_KEY) => m.name_keyadr(),
+        _ => &[],
+    }
+}
+
+/// Bytes of the name starting at `adr`, without the terminating NUL.
+fn name_at<'a>(m: &Model<'a>, adr: usize) -> &'a [std::os::raw::c_char] {
+    let rest = &m.names()[adr.min(m.names().len())..];
+    let end = rest.iter().position(|&c| c == 0).unwrap_or(rest.len());
+    &rest[..end]
+}
+
+/// Id of the object of `objtype` named `name`, or -1 (mj_name2id).
+pub fn name2id(m: &Model, objtype: i32, name: &[u8]) -> i32 {
+    for (i, &adr) in name_table(m, objtype).iter().enumerate() {
+        let n = name_at(m, adr as usize);
+        // strncmp over the rest of the names buffer: equal when both strings end together
+        if n.len() == name.len() && n.iter().zip(name).all(|(&a, &b)| a as u8 == b) {
+            return i as i32;
+        }
+    }
+    -1
+}
+
+/// Address in `names` of the name of object `id`, or None when invalid or empty (mj_id2name).
+pub fn id2name(m: &Model, objtype: i32, id: i32) -> Option<usize> {
+    let adr = name_table(m, objtype);
+    if id < 0 || id as usize >= adr.len() {
+        return None;
+    }
+    let a = adr[id as usize] as usize;
+    (m.names().get(a).copied().unwrap_or(0) != 0).then_some(a)
+}
+
+/// Sum of body masses (mj_getTotalmass).
+pub fn total_mass(m: &Model) -> f64 {
+    let mut res = 0.0;
+    for &b in &m.body_mass()[1..] {
+        res += b;
+    }
+    res
+}
+
+/// Scales masses and inertias to a new total (mj_setTotalmass).
+pub fn set_total_mass(body_mass: &mut [f64], body_inertia: &mut [f64], newmass: f64) {
+    let mut total = 0.0;
+    for &b in &body_mass[1..] {
+        total += b;
+    }
+    let scale = super::linalg::max(
+        super::MINVAL,
+        newmass / super::linalg::max(super::MINVAL, total),
+    );
+    for i in 1..body_mass.len() {
+        body_mass[i] *= scale;
+        body_inertia[3 * i] *= scale;
+        body_inertia[3 * i + 1] *= scale;
+        body_inertia[3 * i + 2] *= scale;
+    }
+}
+
+/// Potential energy: gravity and joint springs (mj_energyPos).
+pub fn energy_pos(m: &Model, d: &mut Data) {
+    if !enabled(m, mjtEnableBit_::mjENBL_ENERGY) {
+        d.raw.energy = [0.0; 2];
+        return;
+    }
+    let mut e = 0.0;
+    if !disabled(m, mjtDisableBit_::mjDSBL_GRAVITY) {
+        for i in 1..m.raw.nbody as usize {
+            e -= m.body_mass()[i] * dot3(&m.raw.opt.gravity, &row(d.xipos, i));
+        }
+    }
+    if !disabled(m, mjtDisableBit_::mjDSBL_PASSIVE) {
+        for j in 0..m.raw.njnt as usize {
+            let k = m.jnt_stiffness()[j];
+            let mut padr = m.jnt_qposadr()[j] as usize;
+            match m.jnt_type()[j] {
+                t @ (JNT_FREE | JNT_BALL) => {
+                    if t == JNT_FREE {
+                        let dif = sub3(&v3(&d.qpos[padr..]), &v3(&m.qpos_spring()[padr..]));
+                        e += 0.5 * k * dot3(&dif, &dif);
+                        padr += 3;
+                    }
+                    let dif = sub_quat(&q4(&d.qpos[padr..]), &q4(&m.qpos_spring()[padr..]));
+                    e += 0.5 * k * dot3(&dif, &dif);
+                }
+                JNT_SLIDE | JNT_HINGE => {
+                    let dq = d.qpos[padr] - m.qpos_spring()[padr];
+                    e += 0.5 * k * dq * dq;
+                }
+                _ => {}
+            }
+        }
+        for i in 0..m.raw.ntendon as usize {
+            let dl = d.ten_length[i] - m.tendon_lengthspring()[i];
+            e += 0.5 * m.tendon_stiffness()[i] * dl * dl;
+        }
+    }
+    d.raw.energy[0] = e;
+}
+
+/// Kinetic energy 0.5 qvel' M qvel (mj_energyVel).
+pub fn energy_vel(m: &Model, d: &mut Data) -> Result<(), EngineError> {
+    if !enabled(m, mjtEnableBit_::mjENBL_ENERGY) {
+        return Ok(());
+    }
+    let nv = m.raw.nv as usize;
+    let e = d.arena.scope(|a| -> Result<f64, EngineError> {
+        let vec = a.alloc(nv)?;
+        super::jacobian::mul_m(m, d.qM, vec, d.qvel);
+        Ok(0.5 * dot(vec, d.qvel))
+    })?;
+    d.raw.energy[1] = e;
+    Ok(())
+}

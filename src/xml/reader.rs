@@ -1,0 +1,1060 @@
+//! MJCF element tree to `ModelSpec`: sections in 2.2.2's order, defaults classes applied.
+
+use super::tree::Element;
+use crate::compiler::spec::*;
+
+type R<T> = Result<T, String>;
+
+/// Error naming the element and its line, as 2.2.2's XML errors do.
+pub fn xerr(el: &Element, msg: &str) -> String {
+    format!(
+        "XML Error: {msg}\nElement '{}', line {}\n",
+        el.name, el.line
+    )
+}
+
+fn parse_real<T: std::str::FromStr + From<f32> + PartialEq>(tok: &str) -> Option<T> {
+    let body = tok.strip_prefix('-').unwrap_or(tok);
+    let special = |s: &str| s.eq_ignore_ascii_case("inf") || s.eq_ignore_ascii_case("nan");
+    if (tok.len() == 3 || (tok.len() == 4 && tok.starts_with('-'))) && special(body) {
+        let v: f32 = if body.eq_ignore_ascii_case("inf") {
+            f32::INFINITY
+        } else {
+            f32::NAN
+        };
+        let v = if tok.starts_with('-') { -v } else { v };
+        return Some(T::from(v));
+    }
+    if !tok
+        .bytes()
+        .all(|b| b.is_ascii_digit() || b"+-.eE".contains(&b))
+    {
+        return None;
+    }
+    tok.parse::<T>().ok()
+}
+
+/// Reads up to `out.len()` numbers of attribute `name`; returns how many (0: absent).
+fn read_nums<T: std::str::FromStr + From<f32> + Copy + PartialEq>(
+    el: &Element,
+    name: &str,
+    out: &mut [T],
+    required: bool,
+    exact: bool,
+) -> R<usize> {
+    let Some(text) = el.attr(name) else {
+        return if required {
+            Err(xerr(el, &format!("required attribute missing: '{name}'")))
+        } else {
+            Ok(0)
+        };
+    };
+    let mut toks = text.split_ascii_whitespace();
+    let mut n = 0;
+    if text.trim_ascii().is_empty() && !out.is_empty() {
+        return Err(xerr(el, &format!("problem reading attribute '{name}'")));
+    }
+    while n < out.len() {
+        let Some(tok) = toks.next() else { break };
+        out[n] = parse_real::<T>(tok)
+            .ok_or_else(|| xerr(el, &format!("problem reading attribute '{name}'")))?;
+        if out[n] != out[n] {
+            crate::capi::errmem::warning("XML contains a 'NaN'. Please check it carefully.");
+        }
+        n += 1;
+    }
+    if exact && n < out.len() {
+        return Err(xerr(
+            el,
+            &format!("attribute '{name}' does not have enough data"),
+        ));
+    }
+    if toks.next().is_some() {
+        return Err(xerr(el, &format!("attribute '{name}' has too much data")));
+    }
+    Ok(n)
+}
+
+fn nums(el: &Element, name: &str, out: &mut [f64]) -> R<bool> {
+    Ok(read_nums(el, name, out, false, true)? > 0)
+}
+
+fn some_nums(el: &Element, name: &str, out: &mut [f64]) -> R<usize> {
+    read_nums(el, name, out, false, false)
+}
+
+fn num(el: &Element, name: &str, out: &mut f64) -> R<bool> {
+    nums(el, name, std::slice::from_mut(out))
+}
+
+fn rgba(el: &Element, out: &mut [f32; 4]) -> R<bool> {
+    Ok(read_nums(el, "rgba", out, false, true)? > 0)
+}
+
+/// Single int as `sscanf("%d")` reads it: leading digits, trailing text ignored.
+fn int(el: &Element, name: &str, out: &mut i32) -> R<bool> {
+    let Some(text) = el.attr(name) else {
+        return Ok(false);
+    };
+    let t = text.trim_start();
+    let (sign, rest) = match t.as_bytes().first() {
+        Some(b'-') => (-1i64, &t[1..]),
+        Some(b'+') => (1, &t[1..]),
+        _ => (1, t),
+    };
+    let digits: String = rest.chars().take_while(|c| c.is_ascii_digit()).collect();
+    if digits.is_empty() {
+        return Err(xerr(
+            el,
+            &format!("single int expected in attribute {name}"),
+        ));
+    }
+    let v = digits
+        .parse::<i64>()
+        .unwrap_or(i64::MAX)
+        .saturating_mul(sign);
+    *out = v.clamp(i32::MIN as i64, i32::MAX as i64) as i32;
+    Ok(true)
+}
+
+fn text(el: &Element, name: &str, out: &mut String) -> bool {
+    match el.attr(name) {
+        Some(v) => {
+            *out = v.to_string();
+            true
+        }
+        None => false,
+    }
+}
+
+/// Keyword attribute; returns the index into `keys`.
+fn keyword(el: &Element, name: &str, keys: &[&str]) -> R<Option<usize>> {
+    let Some(v) = el.attr(name) else {
+        return Ok(None);
+    };
+    match keys.iter().position(|k| *k == v) {
+        Some(i) => Ok(Some(i)),
+        None => Err(xerr(el, &format!("invalid keyword: '{v}'"))),
+    }
+}
+
+fn boolean(el: &Element, name: &str) -> R<Option<bool>> {
+    Ok(keyword(el, name, &["false", "true"])?.map(|i| i == 1))
+}
+
+fn tf_auto(el: &Element, name: &str, out: &mut i32) -> R<()> {
+    if let Some(i) = keyword(el, name, &["false", "true", "auto"])? {
+        *out = i as i32;
+    }
+    Ok(())
+}
+
+fn user(el: &Element, out: &mut Vec<f64>) -> R<()> {
+    let mut buf = [0.0; 1000];
+    let n = some_nums(el, "user", &mut buf)?;
+    if n > 0 {
+        *out = buf[..n].to_vec();
+    }
+    Ok(())
+}
+
+const GEOM_TYPES: [&str; 8] = [
+    "plane",
+    "hfield",
+    "sphere",
+    "capsule",
+    "ellipsoid",
+    "cylinder",
+    "box",
+    "mesh",
+];
+
+fn alternative(el: &Element, alt: &mut Alt) -> R<()> {
+    let read = el.attr("quat").is_some() as i32
+        + nums(el, "axisangle", &mut alt.axisangle)? as i32
+        + nums(el, "xyaxes", &mut alt.xyaxes)? as i32
+        + nums(el, "zaxis", &mut alt.zaxis)? as i32
+        + nums(el, "euler", &mut alt.euler)? as i32
+        + nums(el, "fullinertia", &mut alt.fullinertia)? as i32;
+    if read > 1 {
+        return Err(xerr(
+            el,
+            "multiple orientation specifiers for the same field are not allowed",
+        ));
+    }
+    Ok(())
+}
+
+fn one_joint(el: &Element, j: &mut Joint) -> R<()> {
+    text(el, "name", &mut j.name);
+    if let Some(i) = keyword(el, "type", &["free", "ball", "slide", "hinge"])? {
+        j.kind = [
+            JointType::Free,
+            JointType::Ball,
+            JointType::Slide,
+            JointType::Hinge,
+        ][i];
+    }
+    tf_auto(el, "limited", &mut j.limited)?;
+    int(el, "group", &mut j.group)?;
+    some_nums(el, "solreflimit", &mut j.solref_limit)?;
+    some_nums(el, "solimplimit", &mut j.solimp_limit)?;
+    some_nums(el, "solreffriction", &mut j.solref_friction)?;
+    some_nums(el, "solimpfriction", &mut j.solimp_friction)?;
+    nums(el, "pos", &mut j.pos)?;
+    nums(el, "axis", &mut j.axis)?;
+    nums(el, "springdamper", &mut j.springdamper)?;
+    num(el, "stiffness", &mut j.stiffness)?;
+    nums(el, "range", &mut j.range)?;
+    num(el, "margin", &mut j.margin)?;
+    num(el, "ref", &mut j.reference)?;
+    num(el, "springref", &mut j.springref)?;
+    num(el, "armature", &mut j.armature)?;
+    num(el, "damping", &mut j.damping)?;
+    num(el, "frictionloss", &mut j.frictionloss)?;
+    user(el, &mut j.user)?;
+    j.line = el.line;
+    Ok(())
+}
+
+fn one_geom(el: &Element, g: &mut Geom) -> R<()> {
+    text(el, "name", &mut g.name);
+    if let Some(i) = keyword(el, "type", &GEOM_TYPES)? {
+        g.kind = i as i32;
+    }
+    some_nums(el, "size", &mut g.size)?;
+    int(el, "contype", &mut g.contype)?;
+    int(el, "conaffinity", &mut g.conaffinity)?;
+    int(el, "condim", &mut g.condim)?;
+    int(el, "group", &mut g.group)?;
+    int(el, "priority", &mut g.priority)?;
+    some_nums(el, "friction", &mut g.friction)?;
+    num(el, "solmix", &mut g.solmix)?;
+    some_nums(el, "solref", &mut g.solref)?;
+    some_nums(el, "solimp", &mut g.solimp)?;
+    num(el, "margin", &mut g.margin)?;
+    num(el, "gap", &mut g.gap)?;
+    for a in ["hfield", "mesh", "material", "shellinertia"] {
+        if el.attr(a).is_some() {
+            g.unsupported = Some(a);
+        }
+    }
+    let mut fitscale = 0.0;
+    num(el, "fitscale", &mut fitscale)?;
+    rgba(el, &mut g.rgba)?;
+    if let Some(i) = keyword(el, "fluidshape", &["none", "ellipsoid"])? {
+        g.fluid_switch = i == 1;
+    }
+    some_nums(el, "fluidcoef", &mut g.fluid_coefs)?;
+    user(el, &mut g.user)?;
+    num(el, "mass", &mut g.mass)?;
+    num(el, "density", &mut g.density)?;
+    nums(el, "fromto", &mut g.fromto)?;
+    nums(el, "pos", &mut g.pos)?;
+    nums(el, "quat", &mut g.quat)?;
+    alternative(el, &mut g.alt)?;
+    g.line = el.line;
+    Ok(())
+}
+
+fn one_site(el: &Element, s: &mut Site) -> R<()> {
+    text(el, "name", &mut s.name);
+    if let Some(i) = keyword(el, "type", &GEOM_TYPES)? {
+        s.kind = i as i32;
+    }
+    some_nums(el, "size", &mut s.size)?;
+    int(el, "group", &mut s.group)?;
+    nums(el, "pos", &mut s.pos)?;
+    nums(el, "quat", &mut s.quat)?;
+    if el.attr("material").is_some() {
+        s.unsupported = Some("material");
+    }
+    rgba(el, &mut s.rgba)?;
+    nums(el, "fromto", &mut s.fromto)?;
+    alternative(el, &mut s.alt)?;
+    user(el, &mut s.user)?;
+    s.line = el.line;
+    Ok(())
+}
+
+const CAMLIGHT_MODES: [&str; 5] = ["fixed", "track", "trackcom", "targetbody", "targetbodycom"];
+
+fn one_camera(el: &Element, c: &mut Camera) -> R<()> {
+    text(el, "name", &mut c.name);
+    text(el, "target", &mut c.target);
+    if let Some(i) = keyword(el, "mode", &CAMLIGHT_MODES)? {
+        c.mode = i as i32;
+    }
+    nums(el, "pos", &mut c.pos)?;
+    nums(el, "quat", &mut c.quat)?;
+    alternative(el, &mut c.alt)?;
+    num(el, "fovy", &mut c.fovy)?;
+    num(el, "ipd", &mut c.ipd)?;
+    user(el, &mut c.user)?;
+    c.line = el.line;
+    Ok(())
+}
+
+fn floats<const N: usize>(el: &Element, name: &str, out: &mut [f32; N]) -> R<bool> {
+    Ok(read_nums(el, name, out, false, true)? > 0)
+}
+
+fn one_light(el: &Element, l: &mut Light) -> R<()> {
+    text(el, "name", &mut l.name);
+    text(el, "target", &mut l.target);
+    if let Some(i) = keyword(el, "mode", &CAMLIGHT_MODES)? {
+        l.mode = i as i32;
+    }
+    for (name, out) in [
+        ("directional", &mut l.directional),
+        ("castshadow", &mut l.castshadow),
+        ("active", &mut l.active),
+    ] {
+        if let Some(b) = boolean(el, name)? {
+            *out = b;
+        }
+    }
+    nums(el, "pos", &mut l.pos)?;
+    nums(el, "dir", &mut l.dir)?;
+    floats(el, "attenuation", &mut l.attenuation)?;
+    read_nums(
+        el,
+        "cutoff",
+        std::slice::from_mut(&mut l.cutoff),
+        false,
+        true,
+    )?;
+    read_nums(
+        el,
+        "exponent",
+        std::slice::from_mut(&mut l.exponent),
+        false,
+        true,
+    )?;
+    floats(el, "ambient", &mut l.ambient)?;
+    floats(el, "diffuse", &mut l.diffuse)?;
+    floats(el, "specular", &mut l.specular)?;
+    l.line = el.line;
+    Ok(())
+}
+
+const ACTUATORS: [&str; 8] = [
+    "general",
+    "motor",
+    "position",
+    "velocity",
+    "intvelocity",
+    "damper",
+    "cylinder",
+    "adhesion",
+];
+
+fn one_actuator(el: &Element, a: &mut Actuator) -> R<()> {
+    text(el, "name", &mut a.name);
+    int(el, "group", &mut a.group)?;
+    tf_auto(el, "ctrllimited", &mut a.ctrllimited)?;
+    tf_auto(el, "forcelimited", &mut a.forcelimited)?;
+    tf_auto(el, "actlimited", &mut a.actlimited)?;
+    nums(el, "ctrlrange", &mut a.ctrlrange)?;
+    nums(el, "forcerange", &mut a.forcerange)?;
+    nums(el, "actrange", &mut a.actrange)?;
+    nums(el, "lengthrange", &mut a.lengthrange)?;
+    some_nums(el, "gear", &mut a.gear)?;
+    // transmission: joint 0, jointinparent 1, slidercrank 2, tendon 3, site 4, body 5
+    let mut cnt = 0;
+    for (attr, trn) in [
+        ("joint", 0),
+        ("jointinparent", 1),
+        ("tendon", 3),
+        ("cranksite", 2),
+        ("site", 4),
+        ("body", 5),
+    ] {
+        if text(el, attr, &mut a.target) {
+            a.trntype = trn;
+            cnt += 1;
+        }
+    }
+    if cnt > 1 {
+        return Err(xerr(
+            el,
+            "actuator can have at most one of transmission target",
+        ));
+    }
+    let r1 = num(el, "cranklength", &mut a.cranklength)?;
+    let r2 = text(el, "slidersite", &mut a.slidersite);
+    if (r1 || r2) && a.trntype != 2 && a.trntype != TRN_UNDEFINED {
+        return Err(xerr(
+            el,
+            "cranklength and slidersite can only be used in slidercrank transmission",
+        ));
+    }
+    if text(el, "refsite", &mut a.refsite) && a.trntype != 4 && a.trntype != TRN_UNDEFINED {
+        return Err(xerr(el, "refsite can only be used with site transmission"));
+    }
+    match el.name.as_str() {
+        "general" => {
+            let dyn_kw = ["none", "integrator", "filter", "muscle", "user"];
+            if let Some(i) = keyword(el, "dyntype", &dyn_kw)? {
+                a.dyntype = i as i32;
+            }
+            if let Some(i) = keyword(el, "gaintype", &["fixed", "affine", "muscle", "user"])? {
+                a.gaintype = i as i32;
+            }
+            if let Some(i) = keyword(el, "biastype", &["none", "affine", "muscle", "user"])? {
+                a.biastype = i as i32;
+            }
+            some_nums(el, "dynprm", &mut a.dynprm)?;
+            some_nums(el, "gainprm", &mut a.gainprm)?;
+            some_nums(el, "biasprm", &mut a.biasprm)?;
+        }
+        "motor" => {
+            a.gainprm[0] = 1.0;
+            (a.dyntype, a.gaintype, a.biastype) = (0, 0, 0);
+        }
+        "position" | "velocity" => {
+            let (gain, slot) = if el.name == "position" {
+                ("kp", 1)
+            } else {
+                ("kv", 2)
+            };
+            a.biasprm = [0.0; 10];
+            num(el, gain, &mut a.gainprm[0])?;
+            a.biasprm[slot] = -a.gainprm[0];
+            (a.dyntype, a.gaintype, a.biastype) = (0, 0, 1);
+        }
+        "intvelocity" => {
+            a.biasprm = [0.0; 10];
+            num(el, "kp", &mut a.gainprm[0])?;
+            (a.dyntype, a.gaintype, a.biastype) = (1, 0, 1);
+            a.actlimited = 1;
+            a.biasprm[1] = -a.gainprm[0];
+        }
+        "damper" | "adhesion" => {
+            a.gainprm = [0.0; 10];
+            let slot = if el.name == "damper" { 2 } else { 0 };
+            if el.name == "adhesion" {
+                a.biasprm = [0.0; 10];
+                a.gainprm[0] = 1.0;
+            }
+            num(
+                el,
+                if slot == 2 { "kv" } else { "gain" },
+                &mut a.gainprm[slot],
+            )?;
+            if a.gainprm[slot] < 0.0 {
+                let what = if slot == 2 {
+                    "damping coefficient"
+                } else {
+                    "adhesion gain"
+                };
+                return Err(xerr(el, &format!("{what} cannot be negative")));
+            }
+            if slot == 2 {
+                a.gainprm[2] = -a.gainprm[2];
+            }
+            read_nums(el, "ctrlrange", &mut a.ctrlrange, true, true)?;
+            if a.ctrlrange[0] < 0.0 || a.ctrlrange[1] < 0.0 {
+                let what = if slot == 2 { "damper" } else { "adhesion" };
+                return Err(xerr(
+                    el,
+                    &format!("{what} control range cannot be negative"),
+                ));
+            }
+            a.ctrllimited = 1;
+            (a.dyntype, a.gaintype, a.biastype) = (0, if slot == 2 { 1 } else { 0 }, 0);
+        }
+        "cylinder" => {
+            num(el, "timeconst", &mut a.dynprm[0])?;
+            nums(el, "bias", &mut a.biasprm[..3])?;
+            num(el, "area", &mut a.gainprm[0])?;
+            let mut diameter = 0.0;
+            if num(el, "diameter", &mut diameter)? {
+                a.gainprm[0] = std::f64::consts::PI / 4.0 * diameter * diameter;
+            }
+            (a.dyntype, a.gaintype, a.biastype) = (2, 0, 1);
+        }
+        other => return Err(unsupported(el, other)),
+    }
+    user(el, &mut a.user)?;
+    a.line = el.line;
+    Ok(())
+}
+
+fn one_pair(el: &Element, p: &mut Pair, in_default: bool) -> R<()> {
+    if !in_default {
+        read_text(el, "geom1", &mut p.geom1)?;
+        read_text(el, "geom2", &mut p.geom2)?;
+    }
+    text(el, "name", &mut p.name);
+    int(el, "condim", &mut p.condim)?;
+    some_nums(el, "solref", &mut p.solref)?;
+    some_nums(el, "solimp", &mut p.solimp)?;
+    num(el, "margin", &mut p.margin)?;
+    num(el, "gap", &mut p.gap)?;
+    some_nums(el, "friction", &mut p.friction)?;
+    p.line = el.line;
+    Ok(())
+}
+
+/// Required text attribute.
+fn read_text(el: &Element, name: &str, out: &mut String) -> R<()> {
+    if text(el, name, out) {
+        Ok(())
+    } else {
+        Err(xerr(el, &format!("required attribute missing: '{name}'")))
+    }
+}
+
+fn read_contact(spec: &mut ModelSpec, el: &Element) -> R<()> {
+    for c in &el.children {
+        let def = class_of(spec, c)?.unwrap_or(0);
+        if c.name == "pair" {
+            let mut p = spec.defaults[def].pair.clone();
+            one_pair(c, &mut p, false)?;
+            spec.pairs.push(p);
+        } else {
+            let mut e = Exclude {
+                line: c.line,
+                ..Exclude::default()
+            };
+            text(c, "name", &mut e.name);
+            read_text(c, "body1", &mut e.body1)?;
+            read_text(c, "body2", &mut e.body2)?;
+            spec.excludes.push(e);
+        }
+    }
+    Ok(())
+}
+
+fn unsupported(el: &Element, what: &str) -> String {
+    xerr(
+        el,
+        &format!("'{what}' is not supported by this MJCF reader yet"),
+    )
+}
+
+fn find_class(spec: &ModelSpec, name: &str) -> Option<usize> {
+    spec.defaults.iter().position(|d| d.name == name)
+}
+
+/// Class named by the element's `class` attribute, if any.
+fn class_of(spec: &ModelSpec, el: &Element) -> R<Option<usize>> {
+    match el.attr("class") {
+        Some(c) => find_class(spec, c)
+            .map(Some)
+            .ok_or_else(|| xerr(el, "unknown default class")),
+        None => Ok(None),
+    }
+}
+
+fn read_default(spec: &mut ModelSpec, el: &Element, parent: Option<usize>) -> R<()> {
+    let mut name = el.attr("class").unwrap_or("").to_string();
+    let id = match parent {
+        None => {
+            if name.is_empty() {
+                name = "main".into();
+            }
+            spec.defaults[0].name = name;
+            0
+        }
+        Some(p) => {
+            if name.is_empty() {
+                return Err(xerr(el, "empty class name"));
+            }
+            if find_class(spec, &name).is_some() {
+                return Err(xerr(el, "repeated default class name"));
+            }
+            let mut d = spec.defaults[p].clone();
+            d.name = name;
+            d.parent = Some(p);
+            spec.defaults.push(d);
+            spec.defaults.len() - 1
+        }
+    };
+    for c in &el.children {
+        let d = &mut spec.defaults[id];
+        match c.name.as_str() {
+            "joint" => one_joint(c, &mut d.joint)?,
+            "geom" => one_geom(c, &mut d.geom)?,
+            "site" => one_site(c, &mut d.site)?,
+            "camera" => one_camera(c, &mut d.camera)?,
+            "light" => one_light(c, &mut d.light)?,
+            "pair" => one_pair(c, &mut d.pair, true)?,
+            n if ACTUATORS.contains(&n) => one_actuator(c, &mut d.actuator)?,
+            "default" => {}
+            other => return Err(unsupported(c, other)),
+        }
+    }
+    for c in el.children.iter().filter(|c| c.name == "default") {
+        read_default(spec, c, Some(id))?;
+    }
+    Ok(())
+}
+
+fn read_body(spec: &ModelSpec, el: &Element, body: &mut Body, def: usize, world: bool) -> R<()> {
+    if world && !el.attrs.is_empty() {
+        return Err(xerr(el, "World body cannot have attributes"));
+    }
+    for c in &el.children {
+        let cdef = class_of(spec, c)?.unwrap_or(def);
+        match c.name.as_str() {
+            "inertial" => {
+                if world {
+                    return Err(xerr(c, "World body cannot have inertia"));
+                }
+                body.explicit_inertial = true;
+                read_nums(c, "pos", &mut body.ipos, true, true)?;
+                nums(c, "quat", &mut body.iquat)?;
+                read_nums(c, "mass", std::slice::from_mut(&mut body.mass), true, true)?;
+                nums(c, "diaginertia", &mut body.inertia)?;
+                alternative(c, &mut body.ialt)?;
+            }
+            "joint" | "freejoint" => {
+                if world {
+                    return Err(xerr(c, "World body cannot have joints"));
+                }
+                if c.name == "joint" {
+                    let mut j = spec.defaults[cdef].joint.clone();
+                    one_joint(c, &mut j)?;
+                    body.joints.push(j);
+                } else {
+                    let mut j = Joint {
+                        kind: JointType::Free,
+                        ..Joint::default()
+                    };
+                    text(c, "name", &mut j.name);
+                    int(c, "group", &mut j.group)?;
+                    j.line = -1;
+                    body.joints.push(j);
+                }
+            }
+            "geom" => {
+                let mut g = spec.defaults[cdef].geom.clone();
+                one_geom(c, &mut g)?;
+                if !(g.contype == 0 && g.conaffinity == 0 && spec.compiler.discardvisual) {
+                    body.geoms.push(g);
+                }
+            }
+            "site" => {
+                let mut s = spec.defaults[cdef].site.clone();
+                one_site(c, &mut s)?;
+                body.sites.push(s);
+            }
+            "camera" => {
+                let mut cam = spec.defaults[cdef].camera.clone();
+                one_camera(c, &mut cam)?;
+                body.cameras.push(cam);
+            }
+            "light" => {
+                let mut light = spec.defaults[cdef].light.clone();
+                one_light(c, &mut light)?;
+                body.lights.push(light);
+            }
+            "body" => {
+                let mut childdef = def;
+                if let Some(cc) = c.attr("childclass") {
+                    childdef = find_class(spec, cc)
+                        .ok_or_else(|| xerr(c, "unknown default childclass"))?;
+                }
+                let mut child = Body {
+                    line: c.line,
+                    ..Body::default()
+                };
+                text(c, "name", &mut child.name);
+                nums(c, "pos", &mut child.pos)?;
+                nums(c, "quat", &mut child.quat)?;
+                if let Some(m) = boolean(c, "mocap")? {
+                    child.mocap = m;
+                }
+                alternative(c, &mut child.alt)?;
+                user(c, &mut child.user)?;
+                read_body(spec, c, &mut child, childdef, false)?;
+                body.bodies.push(child);
+            }
+            other => return Err(unsupported(c, other)),
+        }
+    }
+    Ok(())
+}
+
+fn read_compiler(spec: &mut ModelSpec, el: &Element) -> R<()> {
+    let c = &mut spec.compiler;
+    if let Some(b) = boolean(el, "autolimits")? {
+        c.autolimits = b;
+    }
+    num(el, "boundmass", &mut c.boundmass)?;
+    num(el, "boundinertia", &mut c.boundinertia)?;
+    num(el, "settotalmass", &mut c.settotalmass)?;
+    if let Some(b) = boolean(el, "balanceinertia")? {
+        c.balanceinertia = b;
+    }
+    for flag in [
+        "strippath",
+        "fitaabb",
+        "convexhull",
+        "usethread",
+        "fusestatic",
+        "exactmeshinertia",
+    ] {
+        if let Some(b) = boolean(el, flag)? {
+            if flag == "fusestatic" && b {
+                return Err(xerr(
+                    el,
+                    "fusestatic is not supported by this MJCF reader yet",
+                ));
+            }
+        }
+    }
+    if let Some(i) = keyword(el, "coordinate", &["local", "global"])? {
+        c.global = i == 1;
+    }
+    if let Some(i) = keyword(el, "angle", &["radian", "degree"])? {
+        c.degree = i == 1;
+    }
+    if let Some(seq) = el.attr("eulerseq") {
+        if seq.len() != 3 {
+            return Err(xerr(el, "euler format must have length 3"));
+        }
+        c.eulerseq.copy_from_slice(seq.as_bytes());
+    }
+    if let Some(b) = boolean(el, "discardvisual")? {
+        c.discardvisual = b;
+    }
+    if let Some(i) = keyword(el, "inertiafromgeom", &["false", "true", "auto"])? {
+        c.inertiafromgeom = [
+            InertiaFromGeom::False,
+            InertiaFromGeom::True,
+            InertiaFromGeom::Auto,
+        ][i];
+    }
+    let mut range = [0.0f64; 2];
+    if nums(el, "inertiagrouprange", &mut range)? {
+        c.inertiagrouprange = range.map(|x| x as i32);
+    }
+    if let Some(lr) = el.children.iter().find(|x| x.name == "lengthrange") {
+        return Err(unsupported(lr, "lengthrange"));
+    }
+    Ok(())
+}
+
+fn read_option(spec: &mut ModelSpec, el: &Element) -> R<()> {
+    let o = &mut spec.option;
+    num(el, "timestep", &mut o.timestep)?;
+    num(el, "apirate", &mut o.apirate)?;
+    num(el, "impratio", &mut o.impratio)?;
+    num(el, "tolerance", &mut o.tolerance)?;
+    num(el, "noslip_tolerance", &mut o.noslip_tolerance)?;
+    num(el, "mpr_tolerance", &mut o.mpr_tolerance)?;
+    nums(el, "gravity", &mut o.gravity)?;
+    nums(el, "wind", &mut o.wind)?;
+    nums(el, "magnetic", &mut o.magnetic)?;
+    num(el, "density", &mut o.density)?;
+    num(el, "viscosity", &mut o.viscosity)?;
+    num(el, "o_margin", &mut o.o_margin)?;
+    some_nums(el, "o_solref", &mut o.o_solref)?;
+    some_nums(el, "o_solimp", &mut o.o_solimp)?;
+    let kws: [(&str, &[&str], &mut i32); 5] = [
+        (
+            "integrator",
+            &["Euler", "RK4", "implicit"],
+            &mut o.integrator,
+        ),
+        (
+            "collision",
+            &["all", "predefined", "dynamic"],
+            &mut o.collision,
+        ),
+        ("cone", &["pyramidal", "elliptic"], &mut o.cone),
+        ("jacobian", &["dense", "sparse", "auto"], &mut o.jacobian),
+        ("solver", &["PGS", "CG", "Newton"], &mut o.solver),
+    ];
+    for (name, keys, out) in kws {
+        if let Some(i) = keyword(el, name, keys)? {
+            *out = i as i32;
+        }
+    }
+    int(el, "iterations", &mut o.iterations)?;
+    int(el, "noslip_iterations", &mut o.noslip_iterations)?;
+    int(el, "mpr_iterations", &mut o.mpr_iterations)?;
+    let flags: Vec<&Element> = el.children.iter().filter(|c| c.name == "flag").collect();
+    if flags.len() > 1 {
+        return Err(xerr(flags[1], "repeated element: 'flag'"));
+    }
+    if let Some(f) = flags.first() {
+        const DISABLE: [&str; 13] = [
+            "constraint",
+            "equality",
+            "frictionloss",
+            "limit",
+            "contact",
+            "passive",
+            "gravity",
+            "clampctrl",
+            "warmstart",
+            "filterparent",
+            "actuation",
+            "refsafe",
+            "sensor",
+        ];
+        const ENABLE: [&str; 5] = ["override", "energy", "fwdinv", "sensornoise", "multiccd"];
+        for (bit, name) in DISABLE.iter().enumerate() {
+            if let Some(on) = keyword(f, name, &["disable", "enable"])? {
+                let mask = 1 << bit;
+                o.disableflags = if on == 1 {
+                    o.disableflags & !mask
+                } else {
+                    o.disableflags | mask
+                };
+            }
+        }
+        for (bit, name) in ENABLE.iter().enumerate() {
+            if let Some(on) = keyword(f, name, &["disable", "enable"])? {
+                let mask = 1 << bit;
+                o.enableflags = if on == 1 {
+                    o.enableflags | mask
+                } else {
+                    o.enableflags & !mask
+                };
+            }
+        }
+    }
+    Ok(())
+}
+
+fn read_size(spec: &mut ModelSpec, el: &Element) -> R<()> {
+    int(el, "njmax", &mut spec.njmax)?;
+    int(el, "nconmax", &mut spec.nconmax)?;
+    int(el, "nstack", &mut spec.nstack)?;
+    int(el, "nuserdata", &mut spec.nuserdata)?;
+    int(el, "nkey", &mut spec.nkey)?;
+    let names = [
+        "body", "jnt", "geom", "site", "cam", "tendon", "actuator", "sensor",
+    ];
+    for (i, n) in names.iter().enumerate() {
+        let attr = format!("nuser_{n}");
+        int(el, &attr, &mut spec.nuser[i])?;
+        if spec.nuser[i] < -1 {
+            return Err(xerr(el, &format!("{attr} must be >= -1")));
+        }
+    }
+    Ok(())
+}
+
+fn f1(el: &Element, name: &str, out: &mut f32) -> R<()> {
+    read_nums(el, name, std::slice::from_mut(out), false, true).map(|_| ())
+}
+
+fn read_visual(spec: &mut ModelSpec, el: &Element) -> R<()> {
+    let v = &mut spec.visual;
+    for c in &el.children {
+        match c.name.as_str() {
+            "global" => {
+                let g = &mut v.global;
+                for (n, out) in [
+                    ("fovy", &mut g.fovy),
+                    ("ipd", &mut g.ipd),
+                    ("azimuth", &mut g.azimuth),
+                    ("elevation", &mut g.elevation),
+                    ("linewidth", &mut g.linewidth),
+                    ("glow", &mut g.glow),
+                ] {
+                    f1(c, n, out)?;
+                }
+                int(c, "offwidth", &mut g.offwidth)?;
+                int(c, "offheight", &mut g.offheight)?;
+            }
+            "quality" => {
+                let q = &mut v.quality;
+                int(c, "shadowsize", &mut q.shadowsize)?;
+                int(c, "offsamples", &mut q.offsamples)?;
+                int(c, "numslices", &mut q.numslices)?;
+                int(c, "numstacks", &mut q.numstacks)?;
+                int(c, "numquads", &mut q.numquads)?;
+            }
+            "headlight" => {
+                let h = &mut v.headlight;
+                floats(c, "ambient", &mut h.ambient)?;
+                floats(c, "diffuse", &mut h.diffuse)?;
+                floats(c, "specular", &mut h.specular)?;
+                int(c, "active", &mut h.active)?;
+            }
+            "map" => {
+                let m = &mut v.map;
+                for (n, out) in [
+                    ("stiffness", &mut m.stiffness),
+                    ("stiffnessrot", &mut m.stiffnessrot),
+                    ("force", &mut m.force),
+                    ("torque", &mut m.torque),
+                    ("alpha", &mut m.alpha),
+                    ("fogstart", &mut m.fogstart),
+                    ("fogend", &mut m.fogend),
+                    ("znear", &mut m.znear),
+                    ("zfar", &mut m.zfar),
+                    ("haze", &mut m.haze),
+                    ("shadowclip", &mut m.shadowclip),
+                    ("shadowscale", &mut m.shadowscale),
+                    ("actuatortendon", &mut m.actuatortendon),
+                ] {
+                    f1(c, n, out)?;
+                }
+            }
+            "scale" => {
+                let m = &mut v.scale;
+                for (n, out) in [
+                    ("forcewidth", &mut m.forcewidth),
+                    ("contactwidth", &mut m.contactwidth),
+                    ("contactheight", &mut m.contactheight),
+                    ("connect", &mut m.connect),
+                    ("com", &mut m.com),
+                    ("camera", &mut m.camera),
+                    ("light", &mut m.light),
+                    ("selectpoint", &mut m.selectpoint),
+                    ("jointlength", &mut m.jointlength),
+                    ("jointwidth", &mut m.jointwidth),
+                    ("actuatorlength", &mut m.actuatorlength),
+                    ("actuatorwidth", &mut m.actuatorwidth),
+                    ("framelength", &mut m.framelength),
+                    ("framewidth", &mut m.framewidth),
+                    ("constraint", &mut m.constraint),
+                    ("slidercrank", &mut m.slidercrank),
+                ] {
+                    f1(c, n, out)?;
+                }
+            }
+            "rgba" => {
+                let r = &mut v.rgba;
+                for (n, out) in [
+                    ("fog", &mut r.fog),
+                    ("haze", &mut r.haze),
+                    ("force", &mut r.force),
+                    ("inertia", &mut r.inertia),
+                    ("joint", &mut r.joint),
+                    ("actuator", &mut r.actuator),
+                    ("actuatornegative", &mut r.actuatornegative),
+                    ("actuatorpositive", &mut r.actuatorpositive),
+                    ("com", &mut r.com),
+                    ("camera", &mut r.camera),
+                    ("light", &mut r.light),
+                    ("selectpoint", &mut r.selectpoint),
+                    ("connect", &mut r.connect),
+                    ("contactpoint", &mut r.contactpoint),
+                    ("contactforce", &mut r.contactforce),
+                    ("contactfriction", &mut r.contactfriction),
+                    ("contacttorque", &mut r.contacttorque),
+                    ("contactgap", &mut r.contactgap),
+                    ("rangefinder", &mut r.rangefinder),
+                    ("constraint", &mut r.constraint),
+                    ("slidercrank", &mut r.slidercrank),
+                    ("crankbroken", &mut r.crankbroken),
+                ] {
+                    floats(c, n, out)?;
+                }
+            }
+            _ => {}
+        }
+    }
+    Ok(())
+}
+
+fn read_statistic(spec: &mut ModelSpec, el: &Element) -> R<()> {
+    for (i, n) in ["meaninertia", "meanmass", "meansize", "extent"]
+        .iter()
+        .enumerate()
+    {
+        num(el, n, &mut spec.stat_override[i])?;
+    }
+    nums(el, "center", &mut spec.center)?;
+    Ok(())
+}
+
+fn read_keys(spec: &mut ModelSpec, el: &Element) -> R<()> {
+    for k in &el.children {
+        let mut key = Key::default();
+        text(k, "name", &mut key.name);
+        num(k, "time", &mut key.time)?;
+        let mut buf = vec![0.0; 1000];
+        let fields: [(&str, &mut Vec<f64>); 6] = [
+            ("qpos", &mut key.qpos),
+            ("qvel", &mut key.qvel),
+            ("act", &mut key.act),
+            ("mpos", &mut key.mpos),
+            ("mquat", &mut key.mquat),
+            ("ctrl", &mut key.ctrl),
+        ];
+        for (name, out) in fields {
+            let n = some_nums(k, name, &mut buf)?;
+            if n > 0 {
+                *out = buf[..n].to_vec();
+            }
+        }
+        spec.keys.push(key);
+    }
+    Ok(())
+}
+
+/// Reads a checked MJCF tree.
+pub fn read(root: &Element) -> R<ModelSpec> {
+    let mut spec = ModelSpec::default();
+    text(root, "model", &mut spec.modelname);
+    let sections = |name: &'static str| root.children.iter().filter(move |c| c.name == name);
+    for s in sections("compiler") {
+        read_compiler(&mut spec, s)?;
+    }
+    for s in sections("option") {
+        read_option(&mut spec, s)?;
+    }
+    for s in sections("size") {
+        read_size(&mut spec, s)?;
+    }
+    for s in sections("visual") {
+        read_visual(&mut spec, s)?;
+    }
+    for s in sections("statistic") {
+        read_statistic(&mut spec, s)?;
+    }
+    for s in sections("default") {
+        read_default(&mut spec, s, None)?;
+    }
+    for s in sections("worldbody") {
+        let mut world = std::mem::take(&mut spec.world);
+        let r = read_body(&spec, s, &mut world, 0, true);
+        spec.world = world;
+        r?;
+    }
+    for s in sections("contact") {
+        read_contact(&mut spec, s)?;
+    }
+    for s in sections("actuator") {
+        for a in &s.children {
+            let def = class_of(&spec, a)?.unwrap_or(0);
+            let mut act = spec.defaults[def].actuator.clone();
+            if !ACTUATORS.contains(&a.name.as_str()) {
+                return Err(unsupported(a, &a.name));
+            }
+            one_actuator(a, &mut act)?;
+            spec.actuators.push(act);
+        }
+    }
+    for s in sections("keyframe") {
+        read_keys(&mut spec, s)?;
+    }
+    const KNOWN: [&str; 10] = [
+        "compiler",
+        "option",
+        "size",
+        "visual",
+        "statistic",
+        "default",
+        "worldbody",
+        "contact",
+        "actuator",
+        "keyframe",
+    ];
+    for c in &root.children {
+        if !KNOWN.contains(&c.name.as_str()) && !c.children.is_empty() {
+            return Err(unsupported(c, &c.name));
+        }
+    }
+    Ok(spec)
+}

@@ -1,0 +1,148 @@
+//! XML text to an element tree that remembers the line of every element.
+
+use quick_xml::events::{BytesStart, Event};
+use quick_xml::Reader;
+
+/// One XML element: name, attributes in document order, child elements, line (1-based).
+#[derive(Debug, Clone)]
+pub struct Element {
+    pub name: String,
+    pub attrs: Vec<(String, String)>,
+    pub children: Vec<Element>,
+    pub line: i32,
+}
+
+impl Element {
+    /// Value of attribute `key`, if present.
+    pub fn attr(&self, key: &str) -> Option<&str> {
+        self.attrs
+            .iter()
+            .find(|(k, _)| k == key)
+            .map(|(_, v)| v.as_str())
+    }
+}
+
+/// Line numbers from byte offsets.
+struct Lines(Vec<usize>);
+
+impl Lines {
+    fn new(text: &str) -> Self {
+        Lines(
+            text.bytes()
+                .enumerate()
+                .filter(|(_, b)| *b == b'\n')
+                .map(|(i, _)| i)
+                .collect(),
+        )
+    }
+    fn line(&self, offset: usize) -> i32 {
+        (self.0.partition_point(|&nl| nl < offset) + 1) as i32
+    }
+}
+
+fn element(e: &BytesStart, line: i32) -> Result<Element, String> {
+    let name = String::from_utf8_lossy(e.name().as_ref()).into_owned();
+    let mut attrs: Vec<(String, String)> = Vec::new();
+    for a in e.attributes().with_checks(true) {
+        let a = a.map_err(|err| format!("XML parse error: {err}, line {line}"))?;
+        let key = String::from_utf8_lossy(a.key.as_ref()).into_owned();
+        let value = a
+            .unescape_value()
+            .map_err(|err| format!("XML parse error: {err}, line {line}"))?;
+        attrs.push((key, value.into_owned()));
+    }
+    Ok(Element {
+        name,
+        attrs,
+        children: Vec::new(),
+        line,
+    })
+}
+
+/// Parses a whole document; returns its root element or a message naming the problem and line.
+pub fn parse(text: &str) -> Result<Element, String> {
+    let lines = Lines::new(text);
+    let mut reader = Reader::from_str(text);
+    reader.config_mut().trim_text(true);
+    let mut stack: Vec<Element> = Vec::new();
+    let mut root: Option<Element> = None;
+    loop {
+        let before = reader.buffer_position() as usize;
+        let ev = match reader.read_event() {
+            Ok(ev) => ev,
+            Err(quick_xml::Error::IllFormed(
+                quick_xml::errors::IllFormedError::MismatchedEndTag { .. },
+            )) => {
+                let (name, line) = stack.last().map_or(("", 0), |e| (e.name.as_str(), e.line));
+                return Err(format!(
+                    "XML parse error 14:\nError=XML_ERROR_MISMATCHED_ELEMENT ErrorID=14 (0xe) \
+                     Line number={line}: XMLElement name={name}\n"
+                ));
+            }
+            Err(err) => {
+                let at = lines.line(reader.error_position() as usize);
+                return Err(format!("XML parse error: {err}\nLine number={at}\n"));
+            }
+        };
+        // the tag starts at the first '<' of the bytes this event consumed
+        let tag_line = || {
+            lines.line(
+                text[before.min(text.len())..]
+                    .find('<')
+                    .map_or(before, |p| before + p),
+            )
+        };
+        match ev {
+            Event::Start(e) => {
+                let el = element(&e, tag_line())?;
+                if root.is_some() && stack.is_empty() {
+                    return Err(format!(
+                        "XML parse error: more than one root element\nLine number={}\n",
+                        el.line
+                    ));
+                }
+                stack.push(el);
+            }
+            Event::Empty(e) => {
+                let el = element(&e, tag_line())?;
+                match stack.last_mut() {
+                    Some(parent) => parent.children.push(el),
+                    None if root.is_none() => root = Some(el),
+                    None => {
+                        return Err(format!(
+                            "XML parse error: more than one root element\nLine number={}\n",
+                            el.line
+                        ))
+                    }
+                }
+            }
+            Event::End(_) => {
+                let el = stack.pop().ok_or("XML parse error: unmatched end tag")?;
+                match stack.last_mut() {
+                    Some(parent) => parent.children.push(el),
+                    None => root = Some(el),
+                }
+            }
+            Event::Eof => break,
+            Event::Text(t) => {
+                if stack.is_empty() && !t.iter().all(|b| b.is_ascii_whitespace()) {
+                    return Err(format!(
+                        "XML parse error: text outside the root element\nLine number={}\n",
+                        lines.line(before)
+                    ));
+                }
+            }
+            _ => {}
+        }
+    }
+    if let Some(open) = stack.last() {
+        return Err(format!(
+            "XML parse error: element '{}' is not closed\nLine number={}\n",
+            open.name, open.line
+        ));
+    }
+    root.ok_or_else(|| {
+        "XML parse error 13:\nError=XML_ERROR_EMPTY_DOCUMENT ErrorID=13 (0xd) Line number=0\n"
+            .to_string()
+    })
+}
