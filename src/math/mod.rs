@@ -9,16 +9,10 @@
 //! - `sparse`, `chol_sparse`: row-sparse matrices, sparse Cholesky and LU (engine_util_sparse.c,
 //!   engine_util_solve.c);
 //! - `wrap`: tendon wrapping (mju_wrap);
-//! - `collide`, `collide_box`, `convex`, `ccd`: narrow-phase collisions (mjc_* of
-//!   engine_collision_primitive.c, _box.c, _convex.c) and libccd 2.1's MPR.
 
 pub mod blas;
-pub mod ccd;
 pub mod chol;
 pub mod chol_sparse;
-pub mod collide;
-pub mod collide_box;
-pub mod convex;
 pub mod eig3;
 pub mod misc;
 pub mod qcqp;

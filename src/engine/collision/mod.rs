@@ -3,9 +3,16 @@
 //! bounding spheres with margin). Any pair that survives would need a narrow-phase routine,
 //! which this slice does not have yet: that is reported as not implemented.
 
-use super::linalg::{max, row};
-use super::{disabled, enabled, Data, EngineError, Model};
+use crate::engine::linalg::{max, row};
+
+pub mod boxes;
+pub mod convex;
+pub mod mpr;
+pub mod primitive;
+#[cfg(test)]
+mod tests;
 use crate::abi::*;
+use crate::engine::{disabled, enabled, Data, EngineError, Model};
 use crate::math::*;
 
 const TYPE_NAMES: [&str; 8] = [

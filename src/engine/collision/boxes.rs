@@ -5,12 +5,12 @@
 //! branches.
 #![allow(clippy::manual_range_contains)]
 
-use super::collide::{ContactGeom, GeomPose};
-use super::vec3::{
+use super::primitive::{ContactGeom, GeomPose};
+use crate::math::vec3::{
     add3, dot3, mul_mat3_t, mul_mat3t_mat, mul_mat_t_vec3, mul_mat_vec3, normalize3, scl3, sub3,
     transpose3,
 };
-use super::{Mat3, Vec3, MINVAL};
+use crate::math::{Mat3, Vec3, MINVAL};
 
 /// Most contacts `box_box` can produce.
 pub const MAX_BOX_CONTACTS: usize = 24;

@@ -6,8 +6,8 @@
 //! sphere pairs, 2 for capsules, 4 otherwise) and returns their number. Like 2.2.2 they may
 //! leave partial values in the slots past the returned count.
 
-use super::vec3::{add3, cross, dist3, dot3, norm3, normalize3, scl3, sub3};
-use super::{Mat3, Vec3, MINVAL};
+use crate::math::vec3::{add3, cross, dist3, dot3, norm3, normalize3, scl3, sub3};
+use crate::math::{Mat3, Vec3, MINVAL};
 
 /// Position, orientation and size of a geom (geom_xpos, geom_xmat, geom_size).
 #[derive(Clone, Copy, Debug, Default)]
@@ -186,7 +186,7 @@ pub fn plane_box(g1: &GeomPose, g2: &GeomPose, margin: f64, con: &mut [ContactGe
             if i & 2 != 0 { s[1] } else { -s[1] },
             if i & 4 != 0 { s[2] } else { -s[2] },
         ];
-        let corner = super::vec3::mul_mat_vec3(&g2.mat, &v);
+        let corner = crate::math::vec3::mul_mat_vec3(&g2.mat, &v);
         let ldist = dot3(&norm, &corner);
         if dist + ldist > margin || ldist > 0.0 {
             continue;
@@ -363,7 +363,7 @@ pub fn sphere_box(g1: &GeomPose, g2: &GeomPose, margin: f64, con: &mut [ContactG
 
 /// Sphere of radius r at p and box g2.
 fn sphere_box_at(con: &mut ContactGeom, margin: f64, p: &Vec3, r: f64, g2: &GeomPose) -> usize {
-    use super::vec3::{mul_mat_t_vec3, mul_mat_vec3};
+    use crate::math::vec3::{mul_mat_t_vec3, mul_mat_vec3};
     let size2 = &g2.size;
     let size1 = [r];
     let center = mul_mat_t_vec3(&g2.mat, &sub3(p, &g2.pos));
@@ -425,7 +425,7 @@ fn sphere_box_at(con: &mut ContactGeom, margin: f64, p: &Vec3, r: f64, g2: &Geom
 /// Capsule (g1) and box (g2): the segment point closest to the box, plus a second point along
 /// the capsule when it lies along an edge or face (2.2.2's heuristics), each tested as a sphere.
 pub fn capsule_box(g1: &GeomPose, g2: &GeomPose, margin: f64, con: &mut [ContactGeom]) -> usize {
-    use super::vec3::{mul_mat_t_vec3, mul_mat_vec3};
+    use crate::math::vec3::{mul_mat_t_vec3, mul_mat_vec3};
     let (size1, size2) = (&g1.size, &g2.size);
     let halflength = size1[1];
     let mut secondpos = -4.0;

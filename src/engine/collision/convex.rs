@@ -2,16 +2,16 @@
 //! functions, normal correction for smooth geoms, optional multi-contact search by small
 //! perturbations (mjENBL_MULTICCD), and plane-convex contacts with extra mesh vertices.
 
-use super::blas::norm;
-use super::ccd::{vec3_eq, ConvexPair};
-use super::collide::{ContactGeom, GeomPose};
-use super::misc::{min, sign};
-use super::quat::{axis_angle2quat, quat2mat};
-use super::spatial::make_frame;
-use super::vec3::{
+use super::mpr::{vec3_eq, ConvexPair};
+use super::primitive::{ContactGeom, GeomPose};
+use crate::math::blas::norm;
+use crate::math::misc::{min, sign};
+use crate::math::quat::{axis_angle2quat, quat2mat};
+use crate::math::spatial::make_frame;
+use crate::math::vec3::{
     add3, dist3, dot3, mul_mat3, mul_mat_t_vec3, mul_mat_vec3, normalize3, scl3, sub3, transpose3,
 };
-use super::{Mat3, Vec3, MINVAL};
+use crate::math::{Mat3, Vec3, MINVAL};
 
 /// Vertices and (optional) hill-climbing graph of a convex mesh.
 #[derive(Clone, Copy, Debug)]
@@ -490,9 +490,9 @@ pub fn convex_hfield(
     opt: &MprOptions,
     con: &mut [ContactGeom],
 ) -> usize {
-    use super::blas::mul_mat_t_vec;
-    use super::misc::to_int;
-    use super::vec3::mul_mat3t_mat;
+    use crate::math::blas::mul_mat_t_vec;
+    use crate::math::misc::to_int;
+    use crate::math::vec3::mul_mat3t_mat;
     let size1 = &hf.size;
     let (pos1, mat1) = (&hpose.pos, &hpose.mat);
 

@@ -2,7 +2,7 @@
 //! libccd 2.1 in double precision (the version 2.2.2 links): same tests, tolerances and
 //! operation order, so that contacts agree bit for bit given the same support functions.
 
-use super::Vec3;
+use crate::math::Vec3;
 
 /// libccd's epsilon (DBL_EPSILON).
 pub const EPS: f64 = f64::EPSILON;
