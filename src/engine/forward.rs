@@ -17,13 +17,7 @@ use super::{disabled, enabled, not_implemented, tick, Data, EngineError, Model};
 use crate::abi::*;
 use mjtTimer_::*;
 
-/// Tendon lengths and moments: only the tendon-free case exists so far.
-pub fn tendon(m: &Model) -> Result<(), EngineError> {
-    if m.raw.ntendon > 0 {
-        return Err(not_implemented("tendons are"));
-    }
-    Ok(())
-}
+pub use super::tendon::tendon;
 
 /// Sensors are not part of this slice.
 fn sensors(m: &Model) -> Result<(), EngineError> {
@@ -38,7 +32,7 @@ pub fn fwd_position(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     kinematics(m, d)?;
     com_pos(m, d)?;
     camlight(m, d, false);
-    tendon(m)?;
+    tendon(m, d)?;
     tick(d, mjTIMER_POS_KINEMATICS);
     crb(m, d, true);
     factor_m(m, d)?;
@@ -56,6 +50,20 @@ pub fn fwd_position(m: &Model, d: &mut Data) -> Result<(), EngineError> {
 /// Velocity-dependent stage (mj_fwdVelocity).
 pub fn fwd_velocity(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     let (nu, nv) = (m.raw.nu as usize, m.raw.nv as usize);
+    let nten = m.raw.ntendon as usize;
+    if super::jacdif::is_sparse(m) {
+        crate::math::sparse::mul_mat_vec_sparse(
+            d.ten_velocity,
+            d.ten_J,
+            d.qvel,
+            nten,
+            d.ten_J_rownnz,
+            d.ten_J_rowadr,
+            d.ten_J_colind,
+        );
+    } else {
+        mul_mat_vec(d.ten_velocity, d.ten_J, d.qvel, nten, nv);
+    }
     mul_mat_vec(d.actuator_velocity, d.actuator_moment, d.qvel, nu, nv);
     com_vel(m, d);
     passive(m, d)?;

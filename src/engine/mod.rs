@@ -8,6 +8,7 @@ pub mod constraint;
 pub mod forward;
 pub mod inertia;
 pub mod integrate;
+pub mod jacdif;
 pub mod jacobian;
 pub mod kinematics;
 pub mod linalg;
@@ -16,6 +17,7 @@ pub mod print;
 pub mod rne;
 pub mod setconst;
 pub mod support;
+pub mod tendon;
 pub mod transmission;
 pub mod velocity;
 
