@@ -6,7 +6,7 @@ use super::{
 use crate::abi::mjtDisableBit_;
 use crate::math::*;
 
-/// qfrc_passive (mj_passive, without tendons and fluid forces).
+/// qfrc_passive (mj_passive, without tendons).
 pub fn passive(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     d.qfrc_passive.fill(0.0);
     if disabled(m, mjtDisableBit_::mjDSBL_PASSIVE) {
@@ -43,8 +43,5 @@ pub fn passive(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     if m.raw.ntendon > 0 {
         return Err(not_implemented("tendon spring-dampers are"));
     }
-    if m.raw.opt.viscosity > 0.0 || m.raw.opt.density > 0.0 {
-        return Err(not_implemented("fluid forces (density, viscosity) are"));
-    }
-    Ok(())
+    super::fluid::fluid(m, d)
 }
