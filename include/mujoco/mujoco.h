@@ -189,6 +189,26 @@ void mj_warning(mjData *d, int warning, int info);
 
 void mj_setConst(mjModel *m, mjData *d);
 
+void mj_subtreeVel(const mjModel *m, mjData *d);
+
+void mj_rnePostConstraint(const mjModel *m, mjData *d);
+
+void mj_objectVelocity(const mjModel *m,
+                       const mjData *d,
+                       int objtype,
+                       int objid,
+                       mjtNum *res,
+                       int flg_local);
+
+void mj_objectAcceleration(const mjModel *m,
+                           const mjData *d,
+                           int objtype,
+                           int objid,
+                           mjtNum *res,
+                           int flg_local);
+
+void mj_contactForce(const mjModel *m, const mjData *d, int id, mjtNum *result);
+
 void mju_error(const char *msg);
 
 void mju_warning(const char *msg);
@@ -290,10 +310,6 @@ void mj_sensorVel(const mjModel *m, mjData *d);
 
 void mj_sensorAcc(const mjModel *m, mjData *d);
 
-void mj_subtreeVel(const mjModel *m, mjData *d);
-
-void mj_rnePostConstraint(const mjModel *m, mjData *d);
-
 void mj_makeConstraint(const mjModel *m, mjData *d);
 
 void mj_projectConstraint(const mjModel *m, mjData *d);
@@ -317,22 +333,6 @@ int mj_isDual(const mjModel *m);
 void mj_mulJacVec(const mjModel *m, mjData *d, mjtNum *res, const mjtNum *vec);
 
 void mj_mulJacTVec(const mjModel *m, mjData *d, mjtNum *res, const mjtNum *vec);
-
-void mj_objectVelocity(const mjModel *m,
-                       const mjData *d,
-                       int objtype,
-                       int objid,
-                       mjtNum *res,
-                       int flg_local);
-
-void mj_objectAcceleration(const mjModel *m,
-                           const mjData *d,
-                           int objtype,
-                           int objid,
-                           mjtNum *res,
-                           int flg_local);
-
-void mj_contactForce(const mjModel *m, const mjData *d, int id, mjtNum *result);
 
 mjtNum mj_ray(const mjModel *m,
               const mjData *d,

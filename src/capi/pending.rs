@@ -81,16 +81,6 @@ pub unsafe extern "C" fn mj_sensorAcc(m: *const mjModel, d: *mut mjData) {
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_subtreeVel(m: *const mjModel, d: *mut mjData) {
-    pending("mj_subtreeVel");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_rnePostConstraint(m: *const mjModel, d: *mut mjData) {
-    pending("mj_rnePostConstraint");
-}
-
-#[no_mangle]
 pub unsafe extern "C" fn mj_makeConstraint(m: *const mjModel, d: *mut mjData) {
     pending("mj_makeConstraint");
 }
@@ -142,21 +132,6 @@ pub unsafe extern "C" fn mj_mulJacVec(m: *const mjModel, d: *mut mjData, res: *m
 #[no_mangle]
 pub unsafe extern "C" fn mj_mulJacTVec(m: *const mjModel, d: *mut mjData, res: *mut mjtNum, vec: *const mjtNum) {
     pending("mj_mulJacTVec");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_objectVelocity(m: *const mjModel, d: *const mjData, objtype: c_int, objid: c_int, res: *mut mjtNum, flg_local: c_int) {
-    pending("mj_objectVelocity");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_objectAcceleration(m: *const mjModel, d: *const mjData, objtype: c_int, objid: c_int, res: *mut mjtNum, flg_local: c_int) {
-    pending("mj_objectAcceleration");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_contactForce(m: *const mjModel, d: *const mjData, id: c_int, result: *mut mjtNum) {
-    pending("mj_contactForce");
 }
 
 #[no_mangle]
