@@ -209,6 +209,12 @@ void mj_objectAcceleration(const mjModel *m,
 
 void mj_contactForce(const mjModel *m, const mjData *d, int id, mjtNum *result);
 
+void mj_sensorPos(const mjModel *m, mjData *d);
+
+void mj_sensorVel(const mjModel *m, mjData *d);
+
+void mj_sensorAcc(const mjModel *m, mjData *d);
+
 void mju_error(const char *msg);
 
 void mju_warning(const char *msg);
@@ -303,12 +309,6 @@ void mj_invVelocity(const mjModel *m, mjData *d);
 void mj_invConstraint(const mjModel *m, mjData *d);
 
 void mj_compareFwdInv(const mjModel *m, mjData *d);
-
-void mj_sensorPos(const mjModel *m, mjData *d);
-
-void mj_sensorVel(const mjModel *m, mjData *d);
-
-void mj_sensorAcc(const mjModel *m, mjData *d);
 
 void mj_makeConstraint(const mjModel *m, mjData *d);
 

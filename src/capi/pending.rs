@@ -66,21 +66,6 @@ pub unsafe extern "C" fn mj_compareFwdInv(m: *const mjModel, d: *mut mjData) {
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_sensorPos(m: *const mjModel, d: *mut mjData) {
-    pending("mj_sensorPos");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_sensorVel(m: *const mjModel, d: *mut mjData) {
-    pending("mj_sensorVel");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_sensorAcc(m: *const mjModel, d: *mut mjData) {
-    pending("mj_sensorAcc");
-}
-
-#[no_mangle]
 pub unsafe extern "C" fn mj_makeConstraint(m: *const mjModel, d: *mut mjData) {
     pending("mj_makeConstraint");
 }

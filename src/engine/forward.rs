@@ -10,10 +10,11 @@ use super::kinematics::{camlight, com_pos, kinematics};
 use super::linalg::{add_to, is_bad, mul_mat_t_vec, mul_mat_vec, row};
 use super::passive::passive;
 use super::rne::rne_bias;
+use super::sensor::{sensor_acc, sensor_pos, sensor_vel};
 use super::support::{energy_pos, energy_vel, reset_data, warning};
 use super::transmission::transmission;
 use super::velocity::com_vel;
-use super::{disabled, enabled, not_implemented, tick, Data, EngineError, Model};
+use super::{enabled, not_implemented, tick, Data, EngineError, Model};
 use crate::abi::*;
 use mjtTimer_::*;
 
@@ -21,14 +22,6 @@ use mjtTimer_::*;
 pub fn tendon(m: &Model) -> Result<(), EngineError> {
     if m.raw.ntendon > 0 {
         return Err(not_implemented("tendons are"));
-    }
-    Ok(())
-}
-
-/// Sensors are not part of this slice.
-fn sensors(m: &Model) -> Result<(), EngineError> {
-    if m.raw.nsensor > 0 && !disabled(m, mjtDisableBit_::mjDSBL_SENSOR) {
-        return Err(not_implemented("sensors are"));
     }
     Ok(())
 }
@@ -198,7 +191,7 @@ pub fn forward_skip(
     if skipstage < mjtStage_::mjSTAGE_POS as i32 {
         fwd_position(m, d)?;
         if !skipsensor {
-            sensors(m)?;
+            sensor_pos(m, d)?;
         }
         if energy {
             energy_pos(m, d);
@@ -207,7 +200,7 @@ pub fn forward_skip(
     if skipstage < mjtStage_::mjSTAGE_VEL as i32 {
         fwd_velocity(m, d)?;
         if !skipsensor {
-            sensors(m)?;
+            sensor_vel(m, d)?;
         }
         if energy {
             energy_vel(m, d)?;
@@ -217,7 +210,7 @@ pub fn forward_skip(
     fwd_acceleration(m, d)?;
     fwd_constraint(m, d)?;
     if !skipsensor {
-        sensors(m)?;
+        sensor_acc(m, d)?;
     }
     tick(d, mjTIMER_FORWARD);
     Ok(())
@@ -271,10 +264,10 @@ pub fn step1(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     check_pos(m, d)?;
     check_vel(m, d)?;
     fwd_position(m, d)?;
-    sensors(m)?;
+    sensor_pos(m, d)?;
     energy_pos(m, d);
     fwd_velocity(m, d)?;
-    sensors(m)?;
+    sensor_vel(m, d)?;
     energy_vel(m, d)?;
     tick(d, mjTIMER_STEP);
     Ok(())
@@ -285,7 +278,7 @@ pub fn step2(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     fwd_actuation(m, d)?;
     fwd_acceleration(m, d)?;
     fwd_constraint(m, d)?;
-    sensors(m)?;
+    sensor_acc(m, d)?;
     check_acc(m, d)?;
     check_fwdinv(m)?;
     if m.raw.opt.integrator == mjtIntegrator_::mjINT_IMPLICIT as i32 {

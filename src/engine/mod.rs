@@ -14,6 +14,7 @@ pub mod linalg;
 pub mod passive;
 pub mod print;
 pub mod rne;
+pub mod sensor;
 pub mod setconst;
 pub mod support;
 pub mod transmission;
