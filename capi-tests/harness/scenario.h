@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstdlib>
 #include <functional>
 #include <string>
 #include <vector>
@@ -48,7 +49,12 @@ inline void drive(const mjModel* m, mjData* d, const std::vector<mjtNum>& mocap0
   }
 }
 
+// Sensor noise draws from C's rand(): both sides start from the same seed, however the
+// model was made (the reference's mj_loadXML reseeds it, a transplanted model does not).
+inline void seed_noise() { std::srand(1); }
+
 inline void reset(const mjModel* m, mjData* d) {
+  seed_noise();
   mj_resetData(m, d);
   if (m->nkey > 0) mj_resetDataKeyframe(m, d, 0);
 }
@@ -86,6 +92,7 @@ using Check = std::function<void(const mjModel*, mjData*, const Inputs&, Writer&
 
 // Prepares d at state k: reset, state copied in, and (post) the reference forward results.
 inline void at_state(const mjModel* m, mjData* d, const Inputs& in, int k, bool post) {
+  seed_noise();
   mj_resetData(m, d);
   load_state(m, d, *in.states, I(k));
   if (post) load_data(m, d, *in.post, I(k));
