@@ -215,6 +215,18 @@ void mj_sensorVel(const mjModel *m, mjData *d);
 
 void mj_sensorAcc(const mjModel *m, mjData *d);
 
+void mj_inverse(const mjModel *m, mjData *d);
+
+void mj_inverseSkip(const mjModel *m, mjData *d, int skipstage, int skipsensor);
+
+void mj_invPosition(const mjModel *m, mjData *d);
+
+void mj_invVelocity(const mjModel *m, mjData *d);
+
+void mj_invConstraint(const mjModel *m, mjData *d);
+
+void mj_compareFwdInv(const mjModel *m, mjData *d);
+
 void mju_error(const char *msg);
 
 void mju_warning(const char *msg);
@@ -289,10 +301,6 @@ void mj_freeLastXML(void);
 
 int mj_printSchema(const char *filename, char *buffer, int buffer_sz, int flg_html, int flg_pad);
 
-void mj_inverse(const mjModel *m, mjData *d);
-
-void mj_inverseSkip(const mjModel *m, mjData *d, int skipstage, int skipsensor);
-
 void mj_resetCallbacks(void);
 
 int mj_setLengthRange(mjModel *m,
@@ -301,14 +309,6 @@ int mj_setLengthRange(mjModel *m,
                       const mjLROpt *opt,
                       char *error,
                       int error_sz);
-
-void mj_invPosition(const mjModel *m, mjData *d);
-
-void mj_invVelocity(const mjModel *m, mjData *d);
-
-void mj_invConstraint(const mjModel *m, mjData *d);
-
-void mj_compareFwdInv(const mjModel *m, mjData *d);
 
 void mj_makeConstraint(const mjModel *m, mjData *d);
 

@@ -960,3 +960,52 @@ pub unsafe extern "C" fn mj_sensorVel(m: *const mjModel, d: *mut mjData) {
 pub unsafe extern "C" fn mj_sensorAcc(m: *const mjModel, d: *mut mjData) {
     run("mj_sensorAcc", (), m, d, engine::sensor::sensor_acc)
 }
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_inverse(m: *const mjModel, d: *mut mjData) {
+    run("mj_inverse", (), m, d, engine::inverse::inverse)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_inverseSkip(
+    m: *const mjModel,
+    d: *mut mjData,
+    skipstage: c_int,
+    skipsensor: c_int,
+) {
+    run("mj_inverseSkip", (), m, d, |m, d| {
+        engine::inverse::inverse_skip(m, d, skipstage, skipsensor != 0)
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_invPosition(m: *const mjModel, d: *mut mjData) {
+    run("mj_invPosition", (), m, d, engine::inverse::inv_position)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_invVelocity(m: *const mjModel, d: *mut mjData) {
+    run("mj_invVelocity", (), m, d, engine::inverse::inv_velocity)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_invConstraint(m: *const mjModel, d: *mut mjData) {
+    run(
+        "mj_invConstraint",
+        (),
+        m,
+        d,
+        engine::inverse::inv_constraint,
+    )
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_compareFwdInv(m: *const mjModel, d: *mut mjData) {
+    run(
+        "mj_compareFwdInv",
+        (),
+        m,
+        d,
+        engine::inverse::compare_fwd_inv,
+    )
+}

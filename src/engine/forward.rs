@@ -221,9 +221,9 @@ pub fn forward(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     forward_skip(m, d, mjtStage_::mjSTAGE_NONE as i32, false)
 }
 
-fn check_fwdinv(m: &Model) -> Result<(), EngineError> {
+fn check_fwdinv(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     if enabled(m, mjtEnableBit_::mjENBL_FWDINV) {
-        return Err(not_implemented("forward/inverse comparison (fwdinv) is"));
+        super::inverse::compare_fwd_inv(m, d)?;
     }
     Ok(())
 }
@@ -244,7 +244,7 @@ pub fn step_skip(
     check_vel(m, d)?;
     forward_skip(m, d, skipstage, skipsensor)?;
     check_acc(m, d)?;
-    check_fwdinv(m)?;
+    check_fwdinv(m, d)?;
     match m.raw.opt.integrator {
         x if x == mjtIntegrator_::mjINT_EULER as i32 => {
             euler(m, d, skipstage >= mjtStage_::mjSTAGE_POS as i32)?
@@ -280,7 +280,7 @@ pub fn step2(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     fwd_constraint(m, d)?;
     sensor_acc(m, d)?;
     check_acc(m, d)?;
-    check_fwdinv(m)?;
+    check_fwdinv(m, d)?;
     if m.raw.opt.integrator == mjtIntegrator_::mjINT_IMPLICIT as i32 {
         return Err(not_implemented("the implicit integrator is"));
     }

@@ -8,6 +8,7 @@ pub mod constraint;
 pub mod forward;
 pub mod inertia;
 pub mod integrate;
+pub mod inverse;
 pub mod jacobian;
 pub mod kinematics;
 pub mod linalg;
