@@ -1,4 +1,4 @@
-//! `rujoco [model.xml|model.mjb] [steps]`: load a model (the embedded arm when none is given),
+//! `rujoco [model.xml|model.mjb] [steps]`: load a model (the embedded chain when none is given),
 //! simulate it, and print the model, the speed and the final state.
 
 use mujoco::abi::*;
@@ -20,7 +20,7 @@ extern "C" {
     fn mj_step(m: *const mjModel, d: *mut mjData);
 }
 
-const DEFAULT_MODEL: &str = include_str!("../models/arm3.xml");
+const DEFAULT_MODEL: &str = include_str!("../models/chain.xml");
 
 unsafe extern "C" fn on_error(msg: *const c_char) {
     eprintln!("error: {}", CStr::from_ptr(msg).to_string_lossy());
@@ -65,14 +65,18 @@ fn main() {
         mju_user_error = Some(on_error);
         mju_user_warning = Some(on_warning);
     }
-    let (path, _tmp) = match args.first() {
-        Some(p) => (p.clone(), None),
+    let (path, label, _tmp) = match args.first() {
+        Some(p) => (p.clone(), p.clone(), None),
         None => {
             let dir = std::env::temp_dir().join(format!("rujoco-{}", std::process::id()));
             std::fs::create_dir_all(&dir).expect("temp dir");
-            let file = dir.join("arm3.xml");
+            let file = dir.join("chain.xml");
             std::fs::write(&file, DEFAULT_MODEL).expect("write default model");
-            (file.to_string_lossy().into_owned(), Some(TempDir(dir)))
+            (
+                file.to_string_lossy().into_owned(),
+                "embedded default model".to_string(),
+                Some(TempDir(dir)),
+            )
         }
     };
     let m = match load(&path) {
@@ -90,7 +94,7 @@ fn main() {
             mj_resetDataKeyframe(m, d, 0);
         }
         let name = CStr::from_ptr(mm.names).to_string_lossy();
-        println!("model      {name} ({path})");
+        println!("model      {name} ({label})");
         println!(
             "sizes      nq={} nv={} nu={} na={} nbody={} njnt={} ngeom={} nsite={}",
             mm.nq, mm.nv, mm.nu, mm.na, mm.nbody, mm.njnt, mm.ngeom, mm.nsite

@@ -62,7 +62,10 @@ unsafe extern "C" fn counting_free(p: *mut std::os::raw::c_void) {
 }
 
 unsafe extern "C" fn fail(msg: *const c_char) {
-    eprintln!("mju_error: {}", std::ffi::CStr::from_ptr(msg).to_string_lossy());
+    eprintln!(
+        "mju_error: {}",
+        std::ffi::CStr::from_ptr(msg).to_string_lossy()
+    );
     std::process::exit(1);
 }
 

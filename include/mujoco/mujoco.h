@@ -40,6 +40,56 @@ extern mjfAct mjcb_act_bias;
 
 extern mjfCollision mjCOLLISIONFUNC[8][8];
 
+void mj_step(const mjModel *m, mjData *d);
+
+void mj_step1(const mjModel *m, mjData *d);
+
+void mj_step2(const mjModel *m, mjData *d);
+
+void mj_forward(const mjModel *m, mjData *d);
+
+void mj_fwdPosition(const mjModel *m, mjData *d);
+
+void mj_fwdVelocity(const mjModel *m, mjData *d);
+
+void mj_fwdActuation(const mjModel *m, mjData *d);
+
+void mj_fwdAcceleration(const mjModel *m, mjData *d);
+
+void mj_fwdConstraint(const mjModel *m, mjData *d);
+
+void mj_Euler(const mjModel *m, mjData *d);
+
+void mj_kinematics(const mjModel *m, mjData *d);
+
+void mj_comPos(const mjModel *m, mjData *d);
+
+void mj_camlight(const mjModel *m, mjData *d);
+
+void mj_tendon(const mjModel *m, mjData *d);
+
+void mj_transmission(const mjModel *m, mjData *d);
+
+void mj_crb(const mjModel *m, mjData *d);
+
+void mj_factorM(const mjModel *m, mjData *d);
+
+void mj_comVel(const mjModel *m, mjData *d);
+
+void mj_passive(const mjModel *m, mjData *d);
+
+void mj_checkPos(const mjModel *m, mjData *d);
+
+void mj_checkVel(const mjModel *m, mjData *d);
+
+void mj_checkAcc(const mjModel *m, mjData *d);
+
+void mj_energyPos(const mjModel *m, mjData *d);
+
+void mj_energyVel(const mjModel *m, mjData *d);
+
+void mj_collision(const mjModel *m, mjData *d);
+
 void mj_forwardSkip(const mjModel *m, mjData *d, int skipstage, int skipsensor);
 
 void mj_stepSkip(const mjModel *m, mjData *d, int skipstage, int skipsensor);
@@ -109,8 +159,6 @@ void mj_applyFT(const mjModel *m,
                 int body,
                 mjtNum *qfrc_target);
 
-void mj_xfrcAccumulate(const mjModel *m, mjData *d, mjtNum *qfrc);
-
 int mj_name2id(const mjModel *m, int type_, const char *name);
 
 const char *mj_id2name(const mjModel *m, int type_, int id);
@@ -140,6 +188,44 @@ void mj_setTotalmass(mjModel *m, mjtNum newmass);
 void mj_warning(mjData *d, int warning, int info);
 
 void mj_setConst(mjModel *m, mjData *d);
+
+void mj_subtreeVel(const mjModel *m, mjData *d);
+
+void mj_rnePostConstraint(const mjModel *m, mjData *d);
+
+void mj_objectVelocity(const mjModel *m,
+                       const mjData *d,
+                       int objtype,
+                       int objid,
+                       mjtNum *res,
+                       int flg_local);
+
+void mj_objectAcceleration(const mjModel *m,
+                           const mjData *d,
+                           int objtype,
+                           int objid,
+                           mjtNum *res,
+                           int flg_local);
+
+void mj_contactForce(const mjModel *m, const mjData *d, int id, mjtNum *result);
+
+void mj_sensorPos(const mjModel *m, mjData *d);
+
+void mj_sensorVel(const mjModel *m, mjData *d);
+
+void mj_sensorAcc(const mjModel *m, mjData *d);
+
+void mj_inverse(const mjModel *m, mjData *d);
+
+void mj_inverseSkip(const mjModel *m, mjData *d, int skipstage, int skipsensor);
+
+void mj_invPosition(const mjModel *m, mjData *d);
+
+void mj_invVelocity(const mjModel *m, mjData *d);
+
+void mj_invConstraint(const mjModel *m, mjData *d);
+
+void mj_compareFwdInv(const mjModel *m, mjData *d);
 
 void mju_error(const char *msg);
 
@@ -215,10 +301,6 @@ void mj_freeLastXML(void);
 
 int mj_printSchema(const char *filename, char *buffer, int buffer_sz, int flg_html, int flg_pad);
 
-void mj_inverse(const mjModel *m, mjData *d);
-
-void mj_inverseSkip(const mjModel *m, mjData *d, int skipstage, int skipsensor);
-
 void mj_resetCallbacks(void);
 
 int mj_setLengthRange(mjModel *m,
@@ -227,24 +309,6 @@ int mj_setLengthRange(mjModel *m,
                       const mjLROpt *opt,
                       char *error,
                       int error_sz);
-
-void mj_invPosition(const mjModel *m, mjData *d);
-
-void mj_invVelocity(const mjModel *m, mjData *d);
-
-void mj_invConstraint(const mjModel *m, mjData *d);
-
-void mj_compareFwdInv(const mjModel *m, mjData *d);
-
-void mj_sensorPos(const mjModel *m, mjData *d);
-
-void mj_sensorVel(const mjModel *m, mjData *d);
-
-void mj_sensorAcc(const mjModel *m, mjData *d);
-
-void mj_subtreeVel(const mjModel *m, mjData *d);
-
-void mj_rnePostConstraint(const mjModel *m, mjData *d);
 
 void mj_makeConstraint(const mjModel *m, mjData *d);
 
@@ -269,22 +333,6 @@ int mj_isDual(const mjModel *m);
 void mj_mulJacVec(const mjModel *m, mjData *d, mjtNum *res, const mjtNum *vec);
 
 void mj_mulJacTVec(const mjModel *m, mjData *d, mjtNum *res, const mjtNum *vec);
-
-void mj_objectVelocity(const mjModel *m,
-                       const mjData *d,
-                       int objtype,
-                       int objid,
-                       mjtNum *res,
-                       int flg_local);
-
-void mj_objectAcceleration(const mjModel *m,
-                           const mjData *d,
-                           int objtype,
-                           int objid,
-                           mjtNum *res,
-                           int flg_local);
-
-void mj_contactForce(const mjModel *m, const mjData *d, int id, mjtNum *result);
 
 mjtNum mj_ray(const mjModel *m,
               const mjData *d,

@@ -166,8 +166,8 @@ pub fn size_model(m: &mjModel) -> i32 {
         + m.nbuffer
 }
 
-/// Allocates data for `m` without resetting it.
-fn alloc_data(m: &mjModel) -> Result<*mut mjData, String> {
+/// Allocates data for `m`; its contents are undefined until reset.
+pub fn alloc_data(m: &mjModel) -> Result<*mut mjData, String> {
     let rows = data_rows(m);
     let nbuffer =
         buffer_size(rows.iter().map(|r| (r.1, r.2))).ok_or("Invalid data: buffer too large")?;
@@ -196,16 +196,8 @@ fn alloc_data(m: &mjModel) -> Result<*mut mjData, String> {
     Ok(d)
 }
 
-/// `mj_makeData`: allocate and reset.
-pub fn make_data(m: &mjModel) -> Result<*mut mjData, String> {
-    let d = alloc_data(m)?;
-    // SAFETY: d was just made for m.
-    unsafe { reset_data(m, &mut *d, 0) };
-    Ok(d)
-}
-
 /// # Safety
-/// `d` is NULL or came from `make_data`.
+/// `d` is NULL or came from `alloc_data`.
 pub unsafe fn delete_data(d: *mut mjData) {
     if !d.is_null() {
         free((*d).buffer);
@@ -246,85 +238,12 @@ pub unsafe fn copy_data(
     Ok(dest)
 }
 
-/// `mj_resetDataDebug`: clear the header, fill the buffer with `debug`, then set the state
-/// arrays to their defaults (qpos0, mocap poses from the bodies).
+/// Fills the whole array buffer with one byte (`mj_resetDataDebug`'s pattern).
 ///
 /// # Safety
-/// `d` was made for `m`.
-pub unsafe fn reset_data(m: &mjModel, d: &mut mjData, debug: u8) {
-    d.pstack = 0;
-    d.maxuse_stack = 0;
-    d.maxuse_con = 0;
-    d.maxuse_efc = 0;
-    d.warning = std::mem::zeroed();
-    d.timer = std::mem::zeroed();
-    std::ptr::write_bytes(d.solver.as_mut_ptr(), 0, d.solver.len());
-    d.solver_iter = 0;
-    d.solver_nnz = 0;
-    d.solver_fwdinv = [0.0; 2];
-    d.ne = 0;
-    d.nf = 0;
-    d.nefc = 0;
-    d.ncon = 0;
-    d.time = 0.0;
-    d.energy = [0.0; 2];
-    std::ptr::write_bytes(d.buffer as *mut u8, debug, d.nbuffer as usize);
-
-    let mv = view::Model::new(m);
-    let mut dv = view::Data::new(m, d);
-    for a in [
-        &mut dv.qpos,
-        &mut dv.qvel,
-        &mut dv.act,
-        &mut dv.ctrl,
-        &mut dv.qfrc_applied,
-        &mut dv.xfrc_applied,
-    ] {
-        a.fill(0.0);
-    }
-    for a in [
-        &mut dv.qacc,
-        &mut dv.qacc_warmstart,
-        &mut dv.act_dot,
-        &mut dv.userdata,
-        &mut dv.sensordata,
-    ] {
-        a.fill(0.0);
-    }
-    dv.mocap_pos.fill(0.0);
-    dv.mocap_quat.fill(0.0);
-    dv.qpos.copy_from_slice(mv.qpos0());
-    for (i, &id) in mv.body_mocapid().iter().enumerate() {
-        if id >= 0 {
-            let id = id as usize;
-            dv.mocap_pos[3 * id..3 * id + 3].copy_from_slice(&mv.body_pos()[3 * i..3 * i + 3]);
-            dv.mocap_quat[4 * id..4 * id + 4].copy_from_slice(&mv.body_quat()[4 * i..4 * i + 4]);
-        }
-    }
-}
-
-/// `mj_resetDataKeyframe`: reset, then copy keyframe `key` when it exists.
-///
-/// # Safety
-/// `d` was made for `m`.
-pub unsafe fn reset_data_keyframe(m: &mjModel, d: &mut mjData, key: i32) {
-    reset_data(m, d, 0);
-    if key < 0 || key >= m.nkey {
-        return;
-    }
-    let k = key as usize;
-    let mv = view::Model::new(m);
-    let dv = view::Data::new(m, d);
-    let rows = |a: &[f64], n: usize| -> Vec<f64> { a[k * n..(k + 1) * n].to_vec() };
-    dv.raw.time = mv.key_time()[k];
-    dv.qpos.copy_from_slice(&rows(mv.key_qpos(), dv.qpos.len()));
-    dv.qvel.copy_from_slice(&rows(mv.key_qvel(), dv.qvel.len()));
-    dv.act.copy_from_slice(&rows(mv.key_act(), dv.act.len()));
-    dv.mocap_pos
-        .copy_from_slice(&rows(mv.key_mpos(), dv.mocap_pos.len()));
-    dv.mocap_quat
-        .copy_from_slice(&rows(mv.key_mquat(), dv.mocap_quat.len()));
-    dv.ctrl.copy_from_slice(&rows(mv.key_ctrl(), dv.ctrl.len()));
+/// `d` came from `alloc_data`.
+pub unsafe fn fill_buffer(d: &mut mjData, byte: u8) {
+    std::ptr::write_bytes(d.buffer as *mut u8, byte, d.nbuffer as usize);
 }
 
 pub fn default_solref() -> [f64; 2] {

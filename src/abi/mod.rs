@@ -51,7 +51,6 @@ pub mod mjb;
 pub mod mjdata;
 pub mod mjmodel;
 pub mod mjtnum;
-pub mod print;
 pub mod validate;
 pub mod view;
 

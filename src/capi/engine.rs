@@ -33,14 +33,35 @@ fn callbacks_set() -> Option<&'static str> {
     // SAFETY: plain reads of the callback globals, as the C library does.
     unsafe {
         let set = [
-            (std::ptr::addr_of!(mjcb_passive).read().is_some(), "mjcb_passive"),
-            (std::ptr::addr_of!(mjcb_control).read().is_some(), "mjcb_control"),
-            (std::ptr::addr_of!(mjcb_contactfilter).read().is_some(), "mjcb_contactfilter"),
-            (std::ptr::addr_of!(mjcb_sensor).read().is_some(), "mjcb_sensor"),
+            (
+                std::ptr::addr_of!(mjcb_passive).read().is_some(),
+                "mjcb_passive",
+            ),
+            (
+                std::ptr::addr_of!(mjcb_control).read().is_some(),
+                "mjcb_control",
+            ),
+            (
+                std::ptr::addr_of!(mjcb_contactfilter).read().is_some(),
+                "mjcb_contactfilter",
+            ),
+            (
+                std::ptr::addr_of!(mjcb_sensor).read().is_some(),
+                "mjcb_sensor",
+            ),
             (std::ptr::addr_of!(mjcb_time).read().is_some(), "mjcb_time"),
-            (std::ptr::addr_of!(mjcb_act_dyn).read().is_some(), "mjcb_act_dyn"),
-            (std::ptr::addr_of!(mjcb_act_gain).read().is_some(), "mjcb_act_gain"),
-            (std::ptr::addr_of!(mjcb_act_bias).read().is_some(), "mjcb_act_bias"),
+            (
+                std::ptr::addr_of!(mjcb_act_dyn).read().is_some(),
+                "mjcb_act_dyn",
+            ),
+            (
+                std::ptr::addr_of!(mjcb_act_gain).read().is_some(),
+                "mjcb_act_gain",
+            ),
+            (
+                std::ptr::addr_of!(mjcb_act_bias).read().is_some(),
+                "mjcb_act_bias",
+            ),
         ];
         set.iter().find(|s| s.0).map(|s| s.1)
     }
@@ -60,7 +81,9 @@ unsafe fn run<R>(
     }
     guard(name, fallback, || {
         if let Some(cb) = callbacks_set() {
-            return Err(EngineError(format!("{name}: callbacks ({cb}) are not implemented yet")));
+            return Err(EngineError(format!(
+                "{name}: callbacks ({cb}) are not implemented yet"
+            )));
         }
         let mv = Model::new(&*m);
         let mut dv = Data::new(&*m, &mut *d);
@@ -68,80 +91,233 @@ unsafe fn run<R>(
     })
 }
 
-macro_rules! pipeline {
-    ($($cname:ident => $f:expr;)*) => {$(
-        #[no_mangle]
-        pub unsafe extern "C" fn $cname(m: *const mjModel, d: *mut mjData) {
-            run(stringify!($cname), (), m, d, $f)
-        }
-    )*};
-}
-
-pipeline! {
-    mj_step => forward::step;
-    mj_step1 => forward::step1;
-    mj_step2 => forward::step2;
-    mj_forward => forward::forward;
-    mj_fwdPosition => forward::fwd_position;
-    mj_fwdVelocity => forward::fwd_velocity;
-    mj_fwdActuation => engine::actuation::fwd_actuation;
-    mj_fwdAcceleration => forward::fwd_acceleration;
-    mj_fwdConstraint => forward::fwd_constraint;
-    mj_Euler => |m, d| integrate::euler(m, d, false);
-    mj_kinematics => kinematics::kinematics;
-    mj_comPos => kinematics::com_pos;
-    mj_camlight => |m, d| { kinematics::camlight(m, d, false); Ok(()) };
-    mj_tendon => |m, _d| forward::tendon(m);
-    mj_transmission => engine::transmission::transmission;
-    mj_crb => |m, d| { inertia::crb(m, d, true); Ok(()) };
-    mj_factorM => inertia::factor_m;
-    mj_comVel => |m, d| { engine::velocity::com_vel(m, d); Ok(()) };
-    mj_passive => engine::passive::passive;
-    mj_checkPos => forward::check_pos;
-    mj_checkVel => forward::check_vel;
-    mj_checkAcc => forward::check_acc;
-    mj_energyPos => |m, d| { support::energy_pos(m, d); Ok(()) };
-    mj_energyVel => support::energy_vel;
-    mj_collision => engine::collision::collision;
+#[no_mangle]
+pub unsafe extern "C" fn mj_step(m: *const mjModel, d: *mut mjData) {
+    run("mj_step", (), m, d, forward::step)
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_forwardSkip(m: *const mjModel, d: *mut mjData, skipstage: c_int, skipsensor: c_int) {
-    run("mj_forwardSkip", (), m, d, |m, d| forward::forward_skip(m, d, skipstage, skipsensor != 0))
+pub unsafe extern "C" fn mj_step1(m: *const mjModel, d: *mut mjData) {
+    run("mj_step1", (), m, d, forward::step1)
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_stepSkip(m: *const mjModel, d: *mut mjData, skipstage: c_int, skipsensor: c_int) {
-    run("mj_stepSkip", (), m, d, |m, d| forward::step_skip(m, d, skipstage, skipsensor != 0))
+pub unsafe extern "C" fn mj_step2(m: *const mjModel, d: *mut mjData) {
+    run("mj_step2", (), m, d, forward::step2)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_forward(m: *const mjModel, d: *mut mjData) {
+    run("mj_forward", (), m, d, forward::forward)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_fwdPosition(m: *const mjModel, d: *mut mjData) {
+    run("mj_fwdPosition", (), m, d, forward::fwd_position)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_fwdVelocity(m: *const mjModel, d: *mut mjData) {
+    run("mj_fwdVelocity", (), m, d, forward::fwd_velocity)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_fwdActuation(m: *const mjModel, d: *mut mjData) {
+    run(
+        "mj_fwdActuation",
+        (),
+        m,
+        d,
+        engine::actuation::fwd_actuation,
+    )
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_fwdAcceleration(m: *const mjModel, d: *mut mjData) {
+    run("mj_fwdAcceleration", (), m, d, forward::fwd_acceleration)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_fwdConstraint(m: *const mjModel, d: *mut mjData) {
+    run("mj_fwdConstraint", (), m, d, forward::fwd_constraint)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_Euler(m: *const mjModel, d: *mut mjData) {
+    run("mj_Euler", (), m, d, |m, d| integrate::euler(m, d, false))
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_kinematics(m: *const mjModel, d: *mut mjData) {
+    run("mj_kinematics", (), m, d, kinematics::kinematics)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_comPos(m: *const mjModel, d: *mut mjData) {
+    run("mj_comPos", (), m, d, kinematics::com_pos)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_camlight(m: *const mjModel, d: *mut mjData) {
+    run("mj_camlight", (), m, d, |m, d| {
+        kinematics::camlight(m, d, false);
+        Ok(())
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_tendon(m: *const mjModel, d: *mut mjData) {
+    run("mj_tendon", (), m, d, forward::tendon)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_transmission(m: *const mjModel, d: *mut mjData) {
+    run(
+        "mj_transmission",
+        (),
+        m,
+        d,
+        engine::transmission::transmission,
+    )
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_crb(m: *const mjModel, d: *mut mjData) {
+    run("mj_crb", (), m, d, |m, d| {
+        inertia::crb(m, d, true);
+        Ok(())
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_factorM(m: *const mjModel, d: *mut mjData) {
+    run("mj_factorM", (), m, d, inertia::factor_m)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_comVel(m: *const mjModel, d: *mut mjData) {
+    run("mj_comVel", (), m, d, |m, d| {
+        engine::velocity::com_vel(m, d);
+        Ok(())
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_passive(m: *const mjModel, d: *mut mjData) {
+    run("mj_passive", (), m, d, engine::passive::passive)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_checkPos(m: *const mjModel, d: *mut mjData) {
+    run("mj_checkPos", (), m, d, forward::check_pos)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_checkVel(m: *const mjModel, d: *mut mjData) {
+    run("mj_checkVel", (), m, d, forward::check_vel)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_checkAcc(m: *const mjModel, d: *mut mjData) {
+    run("mj_checkAcc", (), m, d, forward::check_acc)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_energyPos(m: *const mjModel, d: *mut mjData) {
+    run("mj_energyPos", (), m, d, |m, d| {
+        support::energy_pos(m, d);
+        Ok(())
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_energyVel(m: *const mjModel, d: *mut mjData) {
+    run("mj_energyVel", (), m, d, support::energy_vel)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_collision(m: *const mjModel, d: *mut mjData) {
+    run("mj_collision", (), m, d, engine::collision::collision)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_forwardSkip(
+    m: *const mjModel,
+    d: *mut mjData,
+    skipstage: c_int,
+    skipsensor: c_int,
+) {
+    run("mj_forwardSkip", (), m, d, |m, d| {
+        forward::forward_skip(m, d, skipstage, skipsensor != 0)
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_stepSkip(
+    m: *const mjModel,
+    d: *mut mjData,
+    skipstage: c_int,
+    skipsensor: c_int,
+) {
+    run("mj_stepSkip", (), m, d, |m, d| {
+        forward::step_skip(m, d, skipstage, skipsensor != 0)
+    })
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn mj_EulerSkip(m: *const mjModel, d: *mut mjData, skipfactor: c_int) {
-    run("mj_EulerSkip", (), m, d, |m, d| integrate::euler(m, d, skipfactor != 0))
+    run("mj_EulerSkip", (), m, d, |m, d| {
+        integrate::euler(m, d, skipfactor != 0)
+    })
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn mj_RungeKutta(m: *const mjModel, d: *mut mjData, N: c_int) {
-    run("mj_RungeKutta", (), m, d, |m, d| integrate::runge_kutta(m, d, N.max(0) as usize))
+    run("mj_RungeKutta", (), m, d, |m, d| {
+        integrate::runge_kutta(m, d, N.max(0) as usize)
+    })
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_solveM(m: *const mjModel, d: *mut mjData, x: *mut mjtNum, y: *const mjtNum, n: c_int) {
+pub unsafe extern "C" fn mj_solveM(
+    m: *const mjModel,
+    d: *mut mjData,
+    x: *mut mjtNum,
+    y: *const mjtNum,
+    n: c_int,
+) {
     run("mj_solveM", (), m, d, |mv, dv| {
         let len = n.max(0) as usize * mv.raw.nv as usize;
         let x = slice_mut(x, len);
-        let y = if y == x.as_ptr() { None } else { Some(slice(y, len)) };
+        let y = if y == x.as_ptr() {
+            None
+        } else {
+            Some(slice(y, len))
+        };
         inertia::solve_ld(mv, x, y, n.max(0) as usize, dv.qLD, dv.qLDiagInv);
         Ok(())
     })
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_solveM2(m: *const mjModel, d: *mut mjData, x: *mut mjtNum, y: *const mjtNum, n: c_int) {
+pub unsafe extern "C" fn mj_solveM2(
+    m: *const mjModel,
+    d: *mut mjData,
+    x: *mut mjtNum,
+    y: *const mjtNum,
+    n: c_int,
+) {
     run("mj_solveM2", (), m, d, |mv, dv| {
         let len = n.max(0) as usize * mv.raw.nv as usize;
         let tmp: Vec<f64> = slice(y, len).to_vec();
-        inertia::solve_m2(mv, slice_mut(x, len), &tmp, n.max(0) as usize, dv.qLD, dv.qLDiagSqrtInv);
+        inertia::solve_m2(
+            mv,
+            slice_mut(x, len),
+            &tmp,
+            n.max(0) as usize,
+            dv.qLD,
+            dv.qLDiagSqrtInv,
+        );
         Ok(())
     })
 }
@@ -159,7 +335,11 @@ pub unsafe extern "C" fn mj_solveLD(
         let mv = Model::new(&*m);
         let len = n.max(0) as usize * mv.raw.nv as usize;
         let x = slice_mut(x, len);
-        let y = if y == x.as_ptr() { None } else { Some(slice(y, len)) };
+        let y = if y == x.as_ptr() {
+            None
+        } else {
+            Some(slice(y, len))
+        };
         let qld = slice(qLD, mv.raw.nM as usize);
         let dinv = slice(qLDiagInv, mv.raw.nv as usize);
         inertia::solve_ld(&mv, x, y, n.max(0) as usize, qld, dinv);
@@ -179,13 +359,29 @@ pub unsafe extern "C" fn mj_factorI(
     run("mj_factorI", (), m, d, |mv, dv| {
         let (nm, nv) = (mv.raw.nM as usize, mv.raw.nv as usize);
         let mat: Vec<f64> = slice(M, nm).to_vec();
-        let sqrt_inv = if qLDiagSqrtInv.is_null() { None } else { Some(slice_mut(qLDiagSqrtInv, nv)) };
-        inertia::factor_i(mv, dv.raw, &mat, slice_mut(qLD, nm), slice_mut(qLDiagInv, nv), sqrt_inv)
+        let sqrt_inv = if qLDiagSqrtInv.is_null() {
+            None
+        } else {
+            Some(slice_mut(qLDiagSqrtInv, nv))
+        };
+        inertia::factor_i(
+            mv,
+            dv.raw,
+            &mat,
+            slice_mut(qLD, nm),
+            slice_mut(qLDiagInv, nv),
+            sqrt_inv,
+        )
     })
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_rne(m: *const mjModel, d: *mut mjData, flg_acc: c_int, result: *mut mjtNum) {
+pub unsafe extern "C" fn mj_rne(
+    m: *const mjModel,
+    d: *mut mjData,
+    flg_acc: c_int,
+    result: *mut mjtNum,
+) {
     run("mj_rne", (), m, d, |mv, dv| {
         let nv = mv.raw.nv as usize;
         let mut out = vec![0.0; nv];
@@ -197,7 +393,14 @@ pub unsafe extern "C" fn mj_rne(m: *const mjModel, d: *mut mjData, flg_acc: c_in
 }
 
 /// Jacobian rows at `point` on `body`, from the raw data (the C signature has a const mjData).
-unsafe fn jac_raw(m: *const mjModel, d: *const mjData, jacp: *mut f64, jacr: *mut f64, point: [f64; 3], body: c_int) {
+unsafe fn jac_raw(
+    m: *const mjModel,
+    d: *const mjData,
+    jacp: *mut f64,
+    jacr: *mut f64,
+    point: [f64; 3],
+    body: c_int,
+) {
     guard("mj_jac", (), || {
         let mv = Model::new(&*m);
         let (nv, nbody) = (mv.raw.nv as usize, mv.raw.nbody as usize);
@@ -226,29 +429,86 @@ pub unsafe extern "C" fn mj_jac(
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_jacBody(m: *const mjModel, d: *const mjData, jacp: *mut mjtNum, jacr: *mut mjtNum, body: c_int) {
-    jac_raw(m, d, jacp, jacr, arr3((*d).xpos.add(3 * body.max(0) as usize)), body)
+pub unsafe extern "C" fn mj_jacBody(
+    m: *const mjModel,
+    d: *const mjData,
+    jacp: *mut mjtNum,
+    jacr: *mut mjtNum,
+    body: c_int,
+) {
+    jac_raw(
+        m,
+        d,
+        jacp,
+        jacr,
+        arr3((*d).xpos.add(3 * body.max(0) as usize)),
+        body,
+    )
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_jacBodyCom(m: *const mjModel, d: *const mjData, jacp: *mut mjtNum, jacr: *mut mjtNum, body: c_int) {
-    jac_raw(m, d, jacp, jacr, arr3((*d).xipos.add(3 * body.max(0) as usize)), body)
+pub unsafe extern "C" fn mj_jacBodyCom(
+    m: *const mjModel,
+    d: *const mjData,
+    jacp: *mut mjtNum,
+    jacr: *mut mjtNum,
+    body: c_int,
+) {
+    jac_raw(
+        m,
+        d,
+        jacp,
+        jacr,
+        arr3((*d).xipos.add(3 * body.max(0) as usize)),
+        body,
+    )
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_jacGeom(m: *const mjModel, d: *const mjData, jacp: *mut mjtNum, jacr: *mut mjtNum, geom: c_int) {
+pub unsafe extern "C" fn mj_jacGeom(
+    m: *const mjModel,
+    d: *const mjData,
+    jacp: *mut mjtNum,
+    jacr: *mut mjtNum,
+    geom: c_int,
+) {
     let g = geom.max(0) as usize;
-    jac_raw(m, d, jacp, jacr, arr3((*d).geom_xpos.add(3 * g)), *(*m).geom_bodyid.add(g))
+    jac_raw(
+        m,
+        d,
+        jacp,
+        jacr,
+        arr3((*d).geom_xpos.add(3 * g)),
+        *(*m).geom_bodyid.add(g),
+    )
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_jacSite(m: *const mjModel, d: *const mjData, jacp: *mut mjtNum, jacr: *mut mjtNum, site: c_int) {
+pub unsafe extern "C" fn mj_jacSite(
+    m: *const mjModel,
+    d: *const mjData,
+    jacp: *mut mjtNum,
+    jacr: *mut mjtNum,
+    site: c_int,
+) {
     let s = site.max(0) as usize;
-    jac_raw(m, d, jacp, jacr, arr3((*d).site_xpos.add(3 * s)), *(*m).site_bodyid.add(s))
+    jac_raw(
+        m,
+        d,
+        jacp,
+        jacr,
+        arr3((*d).site_xpos.add(3 * s)),
+        *(*m).site_bodyid.add(s),
+    )
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_jacSubtreeCom(m: *const mjModel, d: *mut mjData, jacp: *mut mjtNum, body: c_int) {
+pub unsafe extern "C" fn mj_jacSubtreeCom(
+    m: *const mjModel,
+    d: *mut mjData,
+    jacp: *mut mjtNum,
+    body: c_int,
+) {
     run("mj_jacSubtreeCom", (), m, d, |mv, dv| {
         let nv = mv.raw.nv as usize;
         let mut out = vec![0.0; 3 * nv];
@@ -288,18 +548,33 @@ pub unsafe extern "C" fn mj_fullM(m: *const mjModel, dst: *mut mjtNum, M: *const
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_mulM(m: *const mjModel, d: *const mjData, res: *mut mjtNum, vec: *const mjtNum) {
+pub unsafe extern "C" fn mj_mulM(
+    m: *const mjModel,
+    d: *const mjData,
+    res: *mut mjtNum,
+    vec: *const mjtNum,
+) {
     guard("mj_mulM", (), || {
         let mv = Model::new(&*m);
         let nv = mv.raw.nv as usize;
         let v: Vec<f64> = slice(vec, nv).to_vec();
-        jacobian::mul_m(&mv, slice((*d).qM, mv.raw.nM as usize), slice_mut(res, nv), &v);
+        jacobian::mul_m(
+            &mv,
+            slice((*d).qM, mv.raw.nM as usize),
+            slice_mut(res, nv),
+            &v,
+        );
         Ok(())
     })
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_mulM2(m: *const mjModel, d: *const mjData, res: *mut mjtNum, vec: *const mjtNum) {
+pub unsafe extern "C" fn mj_mulM2(
+    m: *const mjModel,
+    d: *const mjData,
+    res: *mut mjtNum,
+    vec: *const mjtNum,
+) {
     guard("mj_mulM2", (), || {
         let mv = Model::new(&*m);
         let nv = mv.raw.nv as usize;
@@ -321,10 +596,19 @@ pub unsafe extern "C" fn mj_addM(
     colind: *mut c_int,
 ) {
     run("mj_addM", (), m, d, |mv, dv| {
-        if !rownnz.is_null() && !rowadr.is_null() && !colind.is_null() {
-            return Err(engine::not_implemented("mj_addM with a sparse destination is"));
-        }
         let nv = mv.raw.nv as usize;
+        if !rownnz.is_null() && !rowadr.is_null() && !colind.is_null() {
+            let rownnz = std::slice::from_raw_parts_mut(rownnz, nv);
+            let rowadr = std::slice::from_raw_parts(rowadr as *const c_int, nv);
+            // uncompressed rows: each may grow to nv entries
+            let len = rowadr
+                .iter()
+                .map(|&a| a.max(0) as usize + nv)
+                .max()
+                .unwrap_or(0);
+            let colind = std::slice::from_raw_parts_mut(colind, len);
+            return jacobian::add_m_sparse(mv, dv, slice_mut(dst, len), rownnz, rowadr, colind);
+        }
         jacobian::add_m_dense(mv, dv.qM, slice_mut(dst, nv * nv));
         Ok(())
     })
@@ -346,19 +630,16 @@ pub unsafe extern "C" fn mj_applyFT(
     run("mj_applyFT", (), m, d, |mv, dv| {
         let nv = mv.raw.nv as usize;
         let mut q: Vec<f64> = slice(qfrc_target, nv).to_vec();
-        forward::apply_ft(mv, dv, f.as_ref(), t.as_ref(), &p, body.max(0) as usize, &mut q)?;
+        forward::apply_ft(
+            mv,
+            dv,
+            f.as_ref(),
+            t.as_ref(),
+            &p,
+            body.max(0) as usize,
+            &mut q,
+        )?;
         slice_mut(qfrc_target, nv).copy_from_slice(&q);
-        Ok(())
-    })
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_xfrcAccumulate(m: *const mjModel, d: *mut mjData, qfrc: *mut mjtNum) {
-    run("mj_xfrcAccumulate", (), m, d, |mv, dv| {
-        let nv = mv.raw.nv as usize;
-        let mut q: Vec<f64> = slice(qfrc, nv).to_vec();
-        forward::xfrc_accumulate(mv, dv, &mut q)?;
-        slice_mut(qfrc, nv).copy_from_slice(&q);
         Ok(())
     })
 }
@@ -370,7 +651,11 @@ pub unsafe extern "C" fn mj_name2id(m: *const mjModel, type_: c_int, name: *cons
     }
     guard("mj_name2id", -1, || {
         let mv = Model::new(&*m);
-        Ok(support::name2id(&mv, type_, std::ffi::CStr::from_ptr(name).to_bytes()))
+        Ok(support::name2id(
+            &mv,
+            type_,
+            std::ffi::CStr::from_ptr(name).to_bytes(),
+        ))
     })
 }
 
@@ -406,7 +691,12 @@ pub unsafe extern "C" fn mj_differentiatePos(
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_integratePos(m: *const mjModel, qpos: *mut mjtNum, qvel: *const mjtNum, dt: mjtNum) {
+pub unsafe extern "C" fn mj_integratePos(
+    m: *const mjModel,
+    qpos: *mut mjtNum,
+    qvel: *const mjtNum,
+    dt: mjtNum,
+) {
     guard("mj_integratePos", (), || {
         let mv = Model::new(&*m);
         let (nq, nv) = (mv.raw.nq as usize, mv.raw.nv as usize);
@@ -443,8 +733,16 @@ pub unsafe extern "C" fn mj_local2Global(
             let bx = arr3(d.xpos.add(3 * b));
             let bm: Mat3 = arr(slice(d.xmat.add(9 * b), 9));
             let bq: Quat = arr(slice(d.xquat.add(4 * b), 4));
-            let p = if pos.is_null() { [0.0; 3] } else { add3(&mul_mat_vec3(&bm, &arr3(pos)), &bx) };
-            let r = if quat.is_null() { [0.0; 9] } else { quat2mat(&mul_quat(&bq, &arr(slice(quat, 4)))) };
+            let p = if pos.is_null() {
+                [0.0; 3]
+            } else {
+                add3(&mul_mat_vec3(&bm, &arr3(pos)), &bx)
+            };
+            let r = if quat.is_null() {
+                [0.0; 9]
+            } else {
+                quat2mat(&mul_quat(&bq, &arr(slice(quat, 4))))
+            };
             (p, r)
         }
         1 => (arr3(d.xpos.add(3 * b)), arr(slice(d.xmat.add(9 * b), 9))),
@@ -460,7 +758,9 @@ pub unsafe extern "C" fn mj_local2Global(
 
 #[no_mangle]
 pub unsafe extern "C" fn mj_getTotalmass(m: *const mjModel) -> mjtNum {
-    guard("mj_getTotalmass", 0.0, || Ok(support::total_mass(&Model::new(&*m))))
+    guard("mj_getTotalmass", 0.0, || {
+        Ok(support::total_mass(&Model::new(&*m)))
+    })
 }
 
 #[no_mangle]
@@ -474,7 +774,9 @@ pub unsafe extern "C" fn mj_setTotalmass(m: *mut mjModel, newmass: mjtNum) {
 
 #[no_mangle]
 pub unsafe extern "C" fn mj_warning(d: *mut mjData, warning: c_int, info: c_int) {
-    guard("mj_warning", (), || support::warning(&mut *d, warning, info))
+    guard("mj_warning", (), || {
+        support::warning(&mut *d, warning, info)
+    })
 }
 
 #[no_mangle]
@@ -491,7 +793,7 @@ pub fn with_temp_data(
     m: &mut mjModel,
     f: impl FnOnce(&mut mjModel, &mut mjData) -> Result<(), EngineError>,
 ) -> Result<(), EngineError> {
-    let d = alloc::make_data(m).map_err(EngineError)?;
+    let d = super::io::new_data(m).map_err(EngineError)?;
     // SAFETY: d was just made for m and is freed right after.
     let r = f(m, unsafe { &mut *d });
     unsafe { alloc::delete_data(d) };
@@ -521,4 +823,189 @@ pub fn set_const_views(m: &mut mjModel, d: &mut mjData) -> Result<(), EngineErro
     }
     m.stat = stat;
     Ok(())
+}
+
+/// Runs `f` on views of a model and data the C signature declares const (only read).
+unsafe fn run_const<R>(
+    name: &str,
+    fallback: R,
+    m: *const mjModel,
+    d: *const mjData,
+    f: impl FnOnce(&Model, &Data) -> Result<R, EngineError>,
+) -> R {
+    if m.is_null() || d.is_null() {
+        errmem::error(&format!("{name}: NULL model or data"));
+        return fallback;
+    }
+    guard(name, fallback, || {
+        let mv = Model::new(&*m);
+        // the view is only read: nothing is written through the const pointer
+        let dv = Data::new(&*m, &mut *(d as *mut mjData));
+        f(&mv, &dv)
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_subtreeVel(m: *const mjModel, d: *mut mjData) {
+    run("mj_subtreeVel", (), m, d, |m, d| {
+        engine::velocity::subtree_vel(m, d);
+        Ok(())
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_rnePostConstraint(m: *const mjModel, d: *mut mjData) {
+    run(
+        "mj_rnePostConstraint",
+        (),
+        m,
+        d,
+        engine::rne::rne_post_constraint,
+    )
+}
+
+/// Checks an object id against the count of its type before a frame lookup.
+fn frame_object(
+    m: &Model,
+    objtype: c_int,
+    objid: c_int,
+    caller: &str,
+) -> Result<usize, EngineError> {
+    use mjtObj_::*;
+    let n = match objtype {
+        x if x == mjOBJ_BODY as c_int || x == mjOBJ_XBODY as c_int => m.raw.nbody,
+        x if x == mjOBJ_GEOM as c_int => m.raw.ngeom,
+        x if x == mjOBJ_SITE as c_int => m.raw.nsite,
+        x if x == mjOBJ_CAMERA as c_int => m.raw.ncam,
+        _ => {
+            return Err(EngineError(format!(
+                "Invalid object type {objtype} in {caller}"
+            )))
+        }
+    };
+    if objid < 0 || objid >= n {
+        return Err(EngineError(format!(
+            "Invalid object id {objid} in {caller}"
+        )));
+    }
+    Ok(objid as usize)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_objectVelocity(
+    m: *const mjModel,
+    d: *const mjData,
+    objtype: c_int,
+    objid: c_int,
+    res: *mut mjtNum,
+    flg_local: c_int,
+) {
+    run_const("mj_objectVelocity", (), m, d, |mv, dv| {
+        let id = frame_object(mv, objtype, objid, "mj_objectVelocity")?;
+        let v = support::object_velocity(mv, dv, objtype, id, flg_local != 0)?;
+        slice_mut(res, 6).copy_from_slice(&v);
+        Ok(())
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_objectAcceleration(
+    m: *const mjModel,
+    d: *const mjData,
+    objtype: c_int,
+    objid: c_int,
+    res: *mut mjtNum,
+    flg_local: c_int,
+) {
+    run_const("mj_objectAcceleration", (), m, d, |mv, dv| {
+        let id = frame_object(mv, objtype, objid, "mj_objectAcceleration")?;
+        let v = support::object_acceleration(mv, dv, objtype, id, flg_local != 0)?;
+        slice_mut(res, 6).copy_from_slice(&v);
+        Ok(())
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_contactForce(
+    m: *const mjModel,
+    d: *const mjData,
+    id: c_int,
+    result: *mut mjtNum,
+) {
+    run_const("mj_contactForce", (), m, d, |mv, dv| {
+        let f = support::contact_force(mv, dv, id);
+        slice_mut(result, 6).copy_from_slice(&f);
+        Ok(())
+    })
+}
+
+/// A pair of standard normal samples from C's rand(), as mju_standardNormal draws them
+/// (sensor noise must consume the same random sequence as the reference).
+pub fn standard_normal() -> (f64, f64) {
+    // SAFETY: rand() has no preconditions.
+    crate::math::misc::standard_normal(|| unsafe { libc::rand() }, libc::RAND_MAX)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_sensorPos(m: *const mjModel, d: *mut mjData) {
+    run("mj_sensorPos", (), m, d, engine::sensor::sensor_pos)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_sensorVel(m: *const mjModel, d: *mut mjData) {
+    run("mj_sensorVel", (), m, d, engine::sensor::sensor_vel)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_sensorAcc(m: *const mjModel, d: *mut mjData) {
+    run("mj_sensorAcc", (), m, d, engine::sensor::sensor_acc)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_inverse(m: *const mjModel, d: *mut mjData) {
+    run("mj_inverse", (), m, d, engine::inverse::inverse)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_inverseSkip(
+    m: *const mjModel,
+    d: *mut mjData,
+    skipstage: c_int,
+    skipsensor: c_int,
+) {
+    run("mj_inverseSkip", (), m, d, |m, d| {
+        engine::inverse::inverse_skip(m, d, skipstage, skipsensor != 0)
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_invPosition(m: *const mjModel, d: *mut mjData) {
+    run("mj_invPosition", (), m, d, engine::inverse::inv_position)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_invVelocity(m: *const mjModel, d: *mut mjData) {
+    run("mj_invVelocity", (), m, d, engine::inverse::inv_velocity)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_invConstraint(m: *const mjModel, d: *mut mjData) {
+    run(
+        "mj_invConstraint",
+        (),
+        m,
+        d,
+        engine::inverse::inv_constraint,
+    )
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_compareFwdInv(m: *const mjModel, d: *mut mjData) {
+    run(
+        "mj_compareFwdInv",
+        (),
+        m,
+        d,
+        engine::inverse::compare_fwd_inv,
+    )
 }

@@ -4,6 +4,7 @@ use super::errmem::{cstr, error, free, malloc, warning};
 use super::guard;
 use crate::abi::view::EngineError;
 use crate::abi::*;
+use crate::engine::support;
 use std::os::raw::{c_char, c_int, c_uchar, c_void};
 
 #[no_mangle]
@@ -74,7 +75,7 @@ pub unsafe extern "C" fn mj_makeData(m: *const mjModel) -> *mut mjData {
         error("mj_makeData: NULL model");
         return std::ptr::null_mut();
     };
-    match alloc::make_data(m) {
+    match new_data(m) {
         Ok(d) => d,
         Err(e) if e.starts_with("Invalid") => {
             warning(&e);
@@ -85,6 +86,14 @@ pub unsafe extern "C" fn mj_makeData(m: *const mjModel) -> *mut mjData {
             std::ptr::null_mut()
         }
     }
+}
+
+/// Allocates data for `m` and resets it.
+pub fn new_data(m: &mjModel) -> Result<*mut mjData, String> {
+    let d = alloc::alloc_data(m)?;
+    // SAFETY: d was just made for m.
+    unsafe { support::reset_data(&view::Model::new(m), &mut view::Data::new(m, &mut *d)) };
+    Ok(d)
 }
 
 #[no_mangle]
@@ -105,7 +114,7 @@ pub unsafe extern "C" fn mj_copyData(
 #[no_mangle]
 pub unsafe extern "C" fn mj_resetData(m: *const mjModel, d: *mut mjData) {
     if let (Some(m), Some(d)) = (m.as_ref(), d.as_mut()) {
-        alloc::reset_data(m, d, 0);
+        support::reset_data(&view::Model::new(m), &mut view::Data::new(m, d));
     }
 }
 
@@ -116,14 +125,17 @@ pub unsafe extern "C" fn mj_resetDataDebug(
     debug_value: c_uchar,
 ) {
     if let (Some(m), Some(d)) = (m.as_ref(), d.as_mut()) {
-        alloc::reset_data(m, d, debug_value);
+        alloc::fill_buffer(d, debug_value);
+        let mut dv = view::Data::new(m, d);
+        support::clear_header(&mut dv);
+        support::reset_state(&view::Model::new(m), &mut dv);
     }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn mj_resetDataKeyframe(m: *const mjModel, d: *mut mjData, key: c_int) {
     if let (Some(m), Some(d)) = (m.as_ref(), d.as_mut()) {
-        alloc::reset_data_keyframe(m, d, key);
+        support::reset_data_keyframe(&view::Model::new(m), &mut view::Data::new(m, d), key);
     }
 }
 

@@ -1,7 +1,9 @@
 //! C entry points of the mju_ utility functions: thin wrappers over `crate::math`.
 //!
-//! Fixed-size arguments are read into local arrays before any result is written, so a result
-//! may alias an input as in C. Variable-size inputs overlapping the result are copied first.
+//! Fixed-size arguments are read into local arrays before each result is written, in the order
+//! 2.2.2 writes them, so a result aliasing an input gives 2.2.2's answer. The same holds for
+//! mju_mulMatVec, mju_mulMatMatT and mju_transpose; other variable-size inputs overlapping the
+//! result are copied first (2.2.2 would read partly overwritten inputs there).
 //! NULL pointers (where C would crash) make a call return without effect.
 
 use super::guard;
@@ -35,6 +37,14 @@ unsafe fn rd<const N: usize>(p: *const mjtNum) -> [f64; N] {
 
 unsafe fn wr<const N: usize>(p: *mut mjtNum, v: [f64; N]) {
     std::ptr::write(p as *mut [f64; N], v)
+}
+
+/// Writes res[0], res[1], ... in turn, each from inputs re-read after the previous write,
+/// reproducing 2.2.2's result when the output aliases an input of a function without temporaries.
+unsafe fn write_seq<const N: usize>(res: *mut f64, f: impl Fn() -> [f64; N]) {
+    for i in 0..N {
+        *res.add(i) = f()[i];
+    }
 }
 
 fn len(n: c_int) -> usize {
@@ -173,7 +183,7 @@ pub unsafe extern "C" fn mju_rotVecMatT(res: *mut mjtNum, vec: *const mjtNum, ma
 #[no_mangle]
 pub unsafe extern "C" fn mju_cross(res: *mut mjtNum, a: *const mjtNum, b: *const mjtNum) {
     nonnull!(res, a, b);
-    wr(res, math::cross(&rd(a), &rd(b)));
+    write_seq::<3>(res, || math::cross(&rd(a), &rd(b)));
 }
 
 #[no_mangle]
@@ -309,6 +319,12 @@ pub unsafe extern "C" fn mju_addScl(
 
 #[no_mangle]
 pub unsafe extern "C" fn mju_normalize(res: *mut mjtNum, n: c_int) -> mjtNum {
+    nonnull!(0.0; res);
+    if n <= 0 {
+        // 2.2.2 sees a zero norm and still sets the first element
+        *res = 1.0;
+        return 0.0;
+    }
     blas::normalize(sl_mut(res, len(n)))
 }
 
@@ -336,12 +352,10 @@ pub unsafe extern "C" fn mju_mulMatVec(
 ) {
     nonnull!(res, mat, vec);
     let (nr, nc) = (len(nr), len(nc));
-    let (mut bm, mut bv) = (Vec::new(), Vec::new());
-    let m = input(mat, nr * nc, res, nr, &mut bm);
-    let v = input(vec, nc, res, nr, &mut bv);
-    run("mju_mulMatVec", (), || {
-        blas::mul_mat_vec(sl_mut(res, nr), m, v, nr, nc)
-    });
+    // one dot product per output, written in turn as 2.2.2 does (exact even when res aliases vec)
+    for r in 0..nr {
+        *res.add(r) = blas::dot(sl(mat.add(r * nc), nc), sl(vec, nc), nc);
+    }
 }
 
 #[no_mangle]
@@ -365,12 +379,13 @@ pub unsafe extern "C" fn mju_mulMatTVec(
 #[no_mangle]
 pub unsafe extern "C" fn mju_transpose(res: *mut mjtNum, mat: *const mjtNum, nr: c_int, nc: c_int) {
     nonnull!(res, mat);
-    let n = len(nr) * len(nc);
-    let mut bm = Vec::new();
-    let m = input(mat, n, res, n, &mut bm);
-    run("mju_transpose", (), || {
-        blas::transpose(sl_mut(res, n), m, len(nr), len(nc))
-    });
+    let (nr, nc) = (len(nr), len(nc));
+    // element by element in 2.2.2's order, so that in-place calls give 2.2.2's result
+    for i in 0..nr {
+        for j in 0..nc {
+            *res.add(j * nr + i) = *mat.add(i * nc + j);
+        }
+    }
 }
 
 #[no_mangle]
@@ -403,12 +418,12 @@ pub unsafe extern "C" fn mju_mulMatMatT(
 ) {
     nonnull!(res, mat1, mat2);
     let (r1, c1, r2) = (len(r1), len(c1), len(r2));
-    let (mut b1, mut b2) = (Vec::new(), Vec::new());
-    let m1 = input(mat1, r1 * c1, res, r1 * r2, &mut b1);
-    let m2 = input(mat2, r2 * c1, res, r1 * r2, &mut b2);
-    run("mju_mulMatMatT", (), || {
-        blas::mul_mat_mat_t(sl_mut(res, r1 * r2), m1, m2, r1, c1, r2)
-    });
+    for i in 0..r1 {
+        for j in 0..r2 {
+            *res.add(i * r2 + j) =
+                blas::dot(sl(mat1.add(i * c1), c1), sl(mat2.add(j * c1), c1), c1);
+        }
+    }
 }
 
 #[no_mangle]
@@ -534,7 +549,7 @@ pub unsafe extern "C" fn mju_mat2Quat(quat: *mut mjtNum, mat: *const mjtNum) {
 #[no_mangle]
 pub unsafe extern "C" fn mju_derivQuat(res: *mut mjtNum, quat: *const mjtNum, vel: *const mjtNum) {
     nonnull!(res, quat, vel);
-    wr(res, math::deriv_quat(&rd(quat), &rd(vel)));
+    write_seq::<4>(res, || math::deriv_quat(&rd(quat), &rd(vel)));
 }
 
 #[no_mangle]
@@ -559,9 +574,10 @@ pub unsafe extern "C" fn mju_mulPose(
     quat2: *const mjtNum,
 ) {
     nonnull!(posres, quatres, pos1, quat1, pos2, quat2);
-    let (p, q) = math::mul_pose(&rd(pos1), &rd(quat1), &rd(pos2), &rd(quat2));
-    wr(quatres, q);
-    wr(posres, p);
+    let q = math::mul_quat(&rd(quat1), &rd(quat2));
+    wr(quatres, math::normalize4(&q).0);
+    wr(posres, math::rot_vec_quat(&rd(pos2), &rd(quat1)));
+    wr(posres, math::add3(&rd(posres), &rd(pos1)));
 }
 
 #[no_mangle]
@@ -572,9 +588,9 @@ pub unsafe extern "C" fn mju_negPose(
     quat: *const mjtNum,
 ) {
     nonnull!(posres, quatres, pos, quat);
-    let (p, q) = math::neg_pose(&rd(pos), &rd(quat));
-    wr(quatres, q);
-    wr(posres, p);
+    wr(quatres, math::neg_quat(&rd(quat)));
+    wr(posres, math::rot_vec_quat(&rd(pos), &rd(quatres)));
+    wr(posres, math::scl3(&rd(posres), -1.0));
 }
 
 #[no_mangle]
@@ -585,7 +601,8 @@ pub unsafe extern "C" fn mju_trnVecPose(
     vec: *const mjtNum,
 ) {
     nonnull!(res, pos, quat, vec);
-    wr(res, math::trn_vec_pose(&rd(pos), &rd(quat), &rd(vec)));
+    wr(res, math::rot_vec_quat(&rd(vec), &rd(quat)));
+    wr(res, math::add3(&rd(res), &rd(pos)));
 }
 
 //------------------------------ decompositions ------------------------------------------------
@@ -740,6 +757,8 @@ pub unsafe extern "C" fn mju_decodePyramid(
     nonnull!(force, pyramid, mu);
     let dim = len(dim);
     if dim < 1 {
+        // 2.2.2 clears the normal force and sums no edges
+        *force = 0.0;
         return;
     }
     let p: Vec<f64> = sl(pyramid, if dim == 1 { 1 } else { 2 * (dim - 1) }).to_vec();

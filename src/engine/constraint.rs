@@ -14,11 +14,15 @@ pub fn make_constraint(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     if disabled(m, mjtDisableBit_::mjDSBL_CONSTRAINT) || m.raw.njmax == 0 {
         return Ok(());
     }
-    if !disabled(m, mjtDisableBit_::mjDSBL_EQUALITY) && m.raw.nemax != 0 && m.eq_active().iter().any(|&a| a != 0) {
+    if !disabled(m, mjtDisableBit_::mjDSBL_EQUALITY)
+        && m.raw.nemax != 0
+        && m.eq_active().iter().any(|&a| a != 0)
+    {
         return Err(not_implemented("equality constraints are"));
     }
     if !disabled(m, mjtDisableBit_::mjDSBL_FRICTIONLOSS)
-        && (m.dof_frictionloss().iter().any(|&f| f > 0.0) || m.tendon_frictionloss().iter().any(|&f| f > 0.0))
+        && (m.dof_frictionloss().iter().any(|&f| f > 0.0)
+            || m.tendon_frictionloss().iter().any(|&f| f > 0.0))
     {
         return Err(not_implemented("frictionloss constraints are"));
     }

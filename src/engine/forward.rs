@@ -10,35 +10,22 @@ use super::kinematics::{camlight, com_pos, kinematics};
 use super::linalg::{add_to, is_bad, mul_mat_t_vec, mul_mat_vec, row};
 use super::passive::passive;
 use super::rne::rne_bias;
+use super::sensor::{sensor_acc, sensor_pos, sensor_vel};
 use super::support::{energy_pos, energy_vel, reset_data, warning};
 use super::transmission::transmission;
 use super::velocity::com_vel;
-use super::{disabled, enabled, not_implemented, tick, Data, EngineError, Model};
+use super::{enabled, not_implemented, tick, Data, EngineError, Model};
 use crate::abi::*;
 use mjtTimer_::*;
 
-/// Tendon lengths and moments: only the tendon-free case exists so far.
-pub fn tendon(m: &Model) -> Result<(), EngineError> {
-    if m.raw.ntendon > 0 {
-        return Err(not_implemented("tendons are"));
-    }
-    Ok(())
-}
-
-/// Sensors are not part of this slice.
-fn sensors(m: &Model) -> Result<(), EngineError> {
-    if m.raw.nsensor > 0 && !disabled(m, mjtDisableBit_::mjDSBL_SENSOR) {
-        return Err(not_implemented("sensors are"));
-    }
-    Ok(())
-}
+pub use super::tendon::tendon;
 
 /// Position-dependent stage (mj_fwdPosition).
 pub fn fwd_position(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     kinematics(m, d)?;
     com_pos(m, d)?;
     camlight(m, d, false);
-    tendon(m)?;
+    tendon(m, d)?;
     tick(d, mjTIMER_POS_KINEMATICS);
     crb(m, d, true);
     factor_m(m, d)?;
@@ -56,6 +43,20 @@ pub fn fwd_position(m: &Model, d: &mut Data) -> Result<(), EngineError> {
 /// Velocity-dependent stage (mj_fwdVelocity).
 pub fn fwd_velocity(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     let (nu, nv) = (m.raw.nu as usize, m.raw.nv as usize);
+    let nten = m.raw.ntendon as usize;
+    if super::jacdif::is_sparse(m) {
+        crate::math::sparse::mul_mat_vec_sparse(
+            d.ten_velocity,
+            d.ten_J,
+            d.qvel,
+            nten,
+            d.ten_J_rownnz,
+            d.ten_J_rowadr,
+            d.ten_J_colind,
+        );
+    } else {
+        mul_mat_vec(d.ten_velocity, d.ten_J, d.qvel, nten, nv);
+    }
     mul_mat_vec(d.actuator_velocity, d.actuator_moment, d.qvel, nu, nv);
     com_vel(m, d);
     passive(m, d)?;
@@ -82,7 +83,15 @@ pub fn apply_ft(
         let jacp = a.alloc(3 * nv)?;
         let jacr = a.alloc(3 * nv)?;
         let qforce = a.alloc(nv)?;
-        jac(m, d.cdof, d.subtree_com, point, body, Some(&mut *jacp), Some(&mut *jacr));
+        jac(
+            m,
+            d.cdof,
+            d.subtree_com,
+            point,
+            body,
+            Some(&mut *jacp),
+            Some(&mut *jacr),
+        );
         if let Some(f) = force {
             mul_mat_t_vec(qforce, jacp, f, 3, nv);
             add_to(&mut qfrc[..nv], qforce);
@@ -101,7 +110,15 @@ pub fn xfrc_accumulate(m: &Model, d: &mut Data, qfrc: &mut [f64]) -> Result<(), 
         let x = row::<6>(d.xfrc_applied, i);
         if x.iter().any(|&v| v != 0.0) {
             let point = row::<3>(d.xipos, i);
-            apply_ft(m, d, Some(&[x[0], x[1], x[2]]), Some(&[x[3], x[4], x[5]]), &point, i, qfrc)?;
+            apply_ft(
+                m,
+                d,
+                Some(&[x[0], x[1], x[2]]),
+                Some(&[x[3], x[4], x[5]]),
+                &point,
+                i,
+                qfrc,
+            )?;
         }
     }
     Ok(())
@@ -172,12 +189,17 @@ fn bad_state(m: &Model, d: &mut Data, kind: mjtWarning_, i: usize) -> Result<(),
 }
 
 /// Forward dynamics, skipping stages up to `skipstage` (mj_forwardSkip).
-pub fn forward_skip(m: &Model, d: &mut Data, skipstage: i32, skipsensor: bool) -> Result<(), EngineError> {
+pub fn forward_skip(
+    m: &Model,
+    d: &mut Data,
+    skipstage: i32,
+    skipsensor: bool,
+) -> Result<(), EngineError> {
     let energy = enabled(m, mjtEnableBit_::mjENBL_ENERGY);
     if skipstage < mjtStage_::mjSTAGE_POS as i32 {
         fwd_position(m, d)?;
         if !skipsensor {
-            sensors(m)?;
+            sensor_pos(m, d)?;
         }
         if energy {
             energy_pos(m, d);
@@ -186,7 +208,7 @@ pub fn forward_skip(m: &Model, d: &mut Data, skipstage: i32, skipsensor: bool) -
     if skipstage < mjtStage_::mjSTAGE_VEL as i32 {
         fwd_velocity(m, d)?;
         if !skipsensor {
-            sensors(m)?;
+            sensor_vel(m, d)?;
         }
         if energy {
             energy_vel(m, d)?;
@@ -196,7 +218,7 @@ pub fn forward_skip(m: &Model, d: &mut Data, skipstage: i32, skipsensor: bool) -
     fwd_acceleration(m, d)?;
     fwd_constraint(m, d)?;
     if !skipsensor {
-        sensors(m)?;
+        sensor_acc(m, d)?;
     }
     tick(d, mjTIMER_FORWARD);
     Ok(())
@@ -207,9 +229,9 @@ pub fn forward(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     forward_skip(m, d, mjtStage_::mjSTAGE_NONE as i32, false)
 }
 
-fn check_fwdinv(m: &Model) -> Result<(), EngineError> {
+fn check_fwdinv(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     if enabled(m, mjtEnableBit_::mjENBL_FWDINV) {
-        return Err(not_implemented("forward/inverse comparison (fwdinv) is"));
+        super::inverse::compare_fwd_inv(m, d)?;
     }
     Ok(())
 }
@@ -220,16 +242,25 @@ pub fn step(m: &Model, d: &mut Data) -> Result<(), EngineError> {
 }
 
 /// mj_step reusing stages up to `skipstage` (mj_stepSkip).
-pub fn step_skip(m: &Model, d: &mut Data, skipstage: i32, skipsensor: bool) -> Result<(), EngineError> {
+pub fn step_skip(
+    m: &Model,
+    d: &mut Data,
+    skipstage: i32,
+    skipsensor: bool,
+) -> Result<(), EngineError> {
     check_pos(m, d)?;
     check_vel(m, d)?;
     forward_skip(m, d, skipstage, skipsensor)?;
     check_acc(m, d)?;
-    check_fwdinv(m)?;
+    check_fwdinv(m, d)?;
     match m.raw.opt.integrator {
-        x if x == mjtIntegrator_::mjINT_EULER as i32 => euler(m, d, skipstage >= mjtStage_::mjSTAGE_POS as i32)?,
+        x if x == mjtIntegrator_::mjINT_EULER as i32 => {
+            euler(m, d, skipstage >= mjtStage_::mjSTAGE_POS as i32)?
+        }
         x if x == mjtIntegrator_::mjINT_RK4 as i32 => runge_kutta(m, d, 4)?,
-        x if x == mjtIntegrator_::mjINT_IMPLICIT as i32 => return Err(not_implemented("the implicit integrator is")),
+        x if x == mjtIntegrator_::mjINT_IMPLICIT as i32 => {
+            return Err(not_implemented("the implicit integrator is"))
+        }
         _ => return Err(EngineError("Invalid integrator".into())),
     }
     tick(d, mjTIMER_STEP);
@@ -241,10 +272,10 @@ pub fn step1(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     check_pos(m, d)?;
     check_vel(m, d)?;
     fwd_position(m, d)?;
-    sensors(m)?;
+    sensor_pos(m, d)?;
     energy_pos(m, d);
     fwd_velocity(m, d)?;
-    sensors(m)?;
+    sensor_vel(m, d)?;
     energy_vel(m, d)?;
     tick(d, mjTIMER_STEP);
     Ok(())
@@ -255,9 +286,9 @@ pub fn step2(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     fwd_actuation(m, d)?;
     fwd_acceleration(m, d)?;
     fwd_constraint(m, d)?;
-    sensors(m)?;
+    sensor_acc(m, d)?;
     check_acc(m, d)?;
-    check_fwdinv(m)?;
+    check_fwdinv(m, d)?;
     if m.raw.opt.integrator == mjtIntegrator_::mjINT_IMPLICIT as i32 {
         return Err(not_implemented("the implicit integrator is"));
     }

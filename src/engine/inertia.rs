@@ -1,6 +1,6 @@
 //! Joint-space inertia: composite rigid bodies (qM), its sparse L'DL factorization and solves.
 
-use super::linalg::{add_to, dot, row};
+use super::linalg::{add_to, dot6, row};
 use super::support::warning;
 use super::{Data, EngineError, Model, MINVAL};
 use crate::abi::{mjData, mjtWarning_};
@@ -31,7 +31,7 @@ pub fn crb(m: &Model, d: &mut Data, skipsimple: bool) {
         let mut j = i as i32;
         while j >= 0 {
             let ju = j as usize;
-            d.qM[adr] += dot(&d.cdof[6 * ju..6 * ju + 6], &tmp);
+            d.qM[adr] += dot6(&d.cdof[6 * ju..6 * ju + 6], &tmp);
             j = m.dof_parentid()[ju];
             adr += 1;
         }
@@ -67,8 +67,9 @@ pub fn factor_i(
             let ai = madr[iu] as usize;
             let cnt = (madr[iu + 1] - madr[iu]) as usize;
             let s = -tmp;
-            for t in 0..cnt {
-                qld[ai + t] += qld[aki + t] * s;
+            let (head, tail) = qld.split_at_mut(aki);
+            for (x, y) in head[ai..ai + cnt].iter_mut().zip(&tail[..cnt]) {
+                *x += y * s;
             }
             qld[aki] = tmp;
             i = m.dof_parentid()[iu];
@@ -127,7 +128,14 @@ fn solve_ld1(m: &Model, x: &mut [f64], qld: &[f64], diag_inv: &[f64]) {
 }
 
 /// x = inv(L'*D*L) * y for `n` vectors of length nv (mj_solveLD); x and y may be the same.
-pub fn solve_ld(m: &Model, x: &mut [f64], y: Option<&[f64]>, n: usize, qld: &[f64], diag_inv: &[f64]) {
+pub fn solve_ld(
+    m: &Model,
+    x: &mut [f64],
+    y: Option<&[f64]>,
+    n: usize,
+    qld: &[f64],
+    diag_inv: &[f64],
+) {
     let nv = m.raw.nv as usize;
     if let Some(y) = y {
         x[..n * nv].copy_from_slice(&y[..n * nv]);

@@ -63,7 +63,11 @@ fn advance(m: &Model, d: &mut Data, act_dot: &[f64], qacc: &[f64], qvel: Option<
         for i in 0..na {
             let iu = i + nu - na;
             if m.actuator_actlimited()[iu] != 0 {
-                d.act[i] = clip(d.act[i], m.actuator_actrange()[2 * iu], m.actuator_actrange()[2 * iu + 1]);
+                d.act[i] = clip(
+                    d.act[i],
+                    m.actuator_actrange()[2 * iu],
+                    m.actuator_actrange()[2 * iu + 1],
+                );
             }
         }
     }

@@ -50,7 +50,12 @@ pub fn jac(
 }
 
 /// Jacobian of the subtree center of mass of `body` (mj_jacSubtreeCom).
-pub fn jac_subtree_com(m: &Model, d: &mut Data, jacp: &mut [f64], body: usize) -> Result<(), EngineError> {
+pub fn jac_subtree_com(
+    m: &Model,
+    d: &mut Data,
+    jacp: &mut [f64],
+    body: usize,
+) -> Result<(), EngineError> {
     let nv = m.raw.nv as usize;
     let nbody = m.raw.nbody as usize;
     jacp[..3 * nv].fill(0.0);
@@ -60,7 +65,15 @@ pub fn jac_subtree_com(m: &Model, d: &mut Data, jacp: &mut [f64], body: usize) -
             if b > body && (m.body_parentid()[b] as usize) < body {
                 break;
             }
-            jac(m, d.cdof, d.subtree_com, &row(d.xipos, b), b, Some(&mut *jb), None);
+            jac(
+                m,
+                d.cdof,
+                d.subtree_com,
+                &row(d.xipos, b),
+                b,
+                Some(&mut *jb),
+                None,
+            );
             add_to_scl(&mut jacp[..3 * nv], jb, m.body_mass()[b]);
         }
         Ok(())
@@ -86,10 +99,26 @@ pub fn jac_point_axis(
     d.arena.scope(|a| -> Result<(), EngineError> {
         let jacr = a.alloc(3 * nv)?;
         match jac_point {
-            Some(p) => jac(m, d.cdof, d.subtree_com, point, body, Some(p), Some(&mut *jacr)),
+            Some(p) => jac(
+                m,
+                d.cdof,
+                d.subtree_com,
+                point,
+                body,
+                Some(p),
+                Some(&mut *jacr),
+            ),
             None => {
                 let p = a.alloc(3 * nv)?;
-                jac(m, d.cdof, d.subtree_com, point, body, Some(p), Some(&mut *jacr))
+                jac(
+                    m,
+                    d.cdof,
+                    d.subtree_com,
+                    point,
+                    body,
+                    Some(p),
+                    Some(&mut *jacr),
+                )
             }
         }
         if let Some(ja) = jac_axis {
@@ -184,4 +213,148 @@ pub fn add_m_dense(m: &Model, qm: &[f64], dst: &mut [f64]) {
             adr += 1;
         }
     }
+}
+
+/// Merges the sorted sparse row (src, src_ind) into (dst, dst_ind): dst = dst + src
+/// (mju_combineSparse with a = b = 1); returns the new nonzero count.
+fn combine_sparse(
+    dst: &mut [f64],
+    dst_ind: &mut [i32],
+    dst_nnz: usize,
+    src: &[f64],
+    src_ind: &[i32],
+    buf: &mut [f64],
+    buf_ind: &mut [i32],
+) -> usize {
+    if dst_nnz == src.len() && dst_ind[..dst_nnz] == *src_ind {
+        for (x, y) in dst[..dst_nnz].iter_mut().zip(src) {
+            *x = 1.0 * *x + 1.0 * y;
+        }
+        return dst_nnz;
+    }
+    buf[..dst_nnz].copy_from_slice(&dst[..dst_nnz]);
+    buf_ind[..dst_nnz].copy_from_slice(&dst_ind[..dst_nnz]);
+    let end = i32::MAX; // past every column index, as n + 1 is in 2.2.2
+    let (mut bi, mut si, mut nnz) = (0, 0, 0);
+    let at = |ind: &[i32], k: usize, len: usize| if k < len { ind[k] } else { end };
+    let (mut badr, mut sadr) = (at(buf_ind, 0, dst_nnz), at(src_ind, 0, src.len()));
+    while bi < dst_nnz || si < src.len() {
+        if badr == sadr {
+            dst[nnz] = 1.0 * buf[bi] + 1.0 * src[si];
+            dst_ind[nnz] = badr;
+            bi += 1;
+            si += 1;
+            badr = at(buf_ind, bi, dst_nnz);
+            sadr = at(src_ind, si, src.len());
+        } else if badr < sadr {
+            dst[nnz] = 1.0 * buf[bi];
+            dst_ind[nnz] = badr;
+            bi += 1;
+            badr = at(buf_ind, bi, dst_nnz);
+        } else {
+            dst[nnz] = 1.0 * src[si];
+            dst_ind[nnz] = sadr;
+            si += 1;
+            sadr = at(src_ind, si, src.len());
+        }
+        nnz += 1;
+    }
+    nnz
+}
+
+/// dst += M for a sparse uncompressed destination (mj_addM with row descriptors).
+pub fn add_m_sparse(
+    m: &Model,
+    d: &mut Data,
+    dst: &mut [f64],
+    rownnz: &mut [i32],
+    rowadr: &[i32],
+    colind: &mut [i32],
+) -> Result<(), EngineError> {
+    let nv = m.raw.nv as usize;
+    let madr = m.dof_Madr();
+    let simple = m.dof_simplenum();
+    let mut nsimple = 0;
+    for i in 0..nv {
+        if simple[i] == 0 {
+            continue;
+        }
+        nsimple += 1;
+        let adr = rowadr[i] as usize;
+        if rownnz[i] == 0 {
+            colind[adr] = i as i32;
+            dst[adr] = d.qM[madr[i] as usize];
+            rownnz[i] = 1;
+        } else {
+            let end = adr + rownnz[i] as usize;
+            match (adr..end).find(|&k| colind[k] == i as i32) {
+                Some(k) => dst[k] += d.qM[madr[i] as usize],
+                None => {
+                    return Err(EngineError(
+                        "mj_addM sparse: dst row expected to be empty".into(),
+                    ))
+                }
+            }
+        }
+    }
+    if nsimple == nv {
+        return Ok(());
+    }
+    let qm = &*d.qM;
+    d.arena.scope(|a| -> Result<(), EngineError> {
+        let mat = a.alloc(nv * nv)?;
+        let mcol = a.alloc_int(nv * nv)?;
+        let mnnz = a.alloc_int(nv)?;
+        let buf = a.alloc(nv)?;
+        let buf_ind = a.alloc_int(nv)?;
+        // lower triangle of M, rows in ascending column order
+        for i in 0..nv {
+            if simple[i] != 0 {
+                continue;
+            }
+            let mut adr = madr[i] as usize;
+            let mut j = i as i32;
+            let mut cnt = 0;
+            while j >= 0 {
+                mat[i * nv + cnt] = qm[adr];
+                mcol[i * nv + cnt] = j;
+                cnt += 1;
+                adr += 1;
+                j = m.dof_parentid()[j as usize];
+            }
+            mnnz[i] = cnt as i32;
+            mat[i * nv..i * nv + cnt].reverse();
+            mcol[i * nv..i * nv + cnt].reverse();
+        }
+        // mirror to the upper triangle
+        for i in 1..nv {
+            if simple[i] != 0 {
+                continue;
+            }
+            for k in nv * i..nv * i + mnnz[i] as usize - 1 {
+                let c = mcol[k] as usize;
+                let dst_k = nv * c + mnnz[c] as usize;
+                mnnz[c] += 1;
+                mat[dst_k] = mat[k];
+                mcol[dst_k] = i as i32;
+            }
+        }
+        for i in 0..nv {
+            if simple[i] != 0 {
+                continue;
+            }
+            let adr = rowadr[i] as usize;
+            let cnt = mnnz[i] as usize;
+            rownnz[i] = combine_sparse(
+                &mut dst[adr..],
+                &mut colind[adr..],
+                rownnz[i] as usize,
+                &mat[i * nv..i * nv + cnt],
+                &mcol[i * nv..i * nv + cnt],
+                buf,
+                buf_ind,
+            ) as i32;
+        }
+        Ok(())
+    })
 }

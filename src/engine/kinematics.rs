@@ -50,7 +50,10 @@ pub fn kinematics(m: &Model, d: &mut Data) -> Result<(), EngineError> {
             let pid = m.body_parentid()[i] as usize;
             let mocap = m.body_mocapid()[i];
             let (bpos, bquat) = if mocap >= 0 {
-                (row::<3>(d.mocap_pos, mocap as usize), row::<4>(d.mocap_quat, mocap as usize))
+                (
+                    row::<3>(d.mocap_pos, mocap as usize),
+                    row::<4>(d.mocap_quat, mocap as usize),
+                )
             } else {
                 (row::<3>(m.body_pos(), i), row::<4>(m.body_quat(), i))
             };
@@ -96,19 +99,37 @@ pub fn kinematics(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     }
 
     for i in 1..nbody {
-        let (p, r) = local_to_global(d, &row(m.body_ipos(), i), &row(m.body_iquat(), i), i, m.body_sameframe()[i]);
+        let (p, r) = local_to_global(
+            d,
+            &row(m.body_ipos(), i),
+            &row(m.body_iquat(), i),
+            i,
+            m.body_sameframe()[i],
+        );
         put(d.xipos, i, &p);
         put(d.ximat, i, &r);
     }
     for i in 0..m.raw.ngeom as usize {
         let b = m.geom_bodyid()[i] as usize;
-        let (p, r) = local_to_global(d, &row(m.geom_pos(), i), &row(m.geom_quat(), i), b, m.geom_sameframe()[i]);
+        let (p, r) = local_to_global(
+            d,
+            &row(m.geom_pos(), i),
+            &row(m.geom_quat(), i),
+            b,
+            m.geom_sameframe()[i],
+        );
         put(d.geom_xpos, i, &p);
         put(d.geom_xmat, i, &r);
     }
     for i in 0..m.raw.nsite as usize {
         let b = m.site_bodyid()[i] as usize;
-        let (p, r) = local_to_global(d, &row(m.site_pos(), i), &row(m.site_quat(), i), b, m.site_sameframe()[i]);
+        let (p, r) = local_to_global(
+            d,
+            &row(m.site_pos(), i),
+            &row(m.site_quat(), i),
+            b,
+            m.site_sameframe()[i],
+        );
         put(d.site_xpos, i, &p);
         put(d.site_xmat, i, &r);
     }
@@ -145,14 +166,22 @@ pub fn com_pos(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     for i in 1..nbody {
         let root = m.body_rootid()[i] as usize;
         let offset = sub3(&row(d.xipos, i), &row(d.subtree_com, root));
-        let ci = inert_com(&row(m.body_inertia(), i), &row(d.ximat, i), &offset, m.body_mass()[i]);
+        let ci = inert_com(
+            &row(m.body_inertia(), i),
+            &row(d.ximat, i),
+            &offset,
+            m.body_mass()[i],
+        );
         put(d.cinert, i, &ci);
     }
 
     for j in 0..m.raw.njnt as usize {
         let da = m.jnt_dofadr()[j] as usize;
         let bi = m.jnt_bodyid()[j] as usize;
-        let offset = sub3(&row(d.subtree_com, m.body_rootid()[bi] as usize), &row(d.xanchor, j));
+        let offset = sub3(
+            &row(d.subtree_com, m.body_rootid()[bi] as usize),
+            &row(d.xanchor, j),
+        );
         match m.jnt_type()[j] {
             t @ (JNT_FREE | JNT_BALL) => {
                 let mut k = da;

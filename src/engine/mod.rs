@@ -1,18 +1,26 @@
 //! The simulation pipeline, one module per stage of MuJoCo's computation chapter.
 
+#![allow(clippy::needless_range_loop)] // index loops mirror the reference algorithms
+
 pub mod actuation;
 pub mod collision;
 pub mod constraint;
+pub mod fluid;
 pub mod forward;
 pub mod inertia;
 pub mod integrate;
+pub mod jacdif;
+pub mod inverse;
 pub mod jacobian;
 pub mod kinematics;
 pub mod linalg;
 pub mod passive;
+pub mod print;
 pub mod rne;
+pub mod sensor;
 pub mod setconst;
 pub mod support;
+pub mod tendon;
 pub mod transmission;
 pub mod velocity;
 

@@ -7,7 +7,7 @@ use super::jacobian::jac;
 use super::kinematics::{camlight, com_pos, kinematics};
 use super::linalg::{dot, max, min, mul_mat_mat_t, put, row};
 use super::transmission::transmission;
-use super::{not_implemented, Data, EngineError, Model, JNT_BALL, JNT_FREE};
+use super::{Data, EngineError, Model, JNT_BALL, JNT_FREE};
 use crate::abi::view::ModelMut;
 use crate::abi::*;
 use crate::math::*;
@@ -32,9 +32,13 @@ pub fn subtree_mass(mm: &mut ModelMut, nbody: usize) {
 pub struct Consts {
     pub dof_m0: Vec<f64>,
     pub actuator_length0: Vec<f64>,
+    pub tendon_length0: Vec<f64>,
+    pub tendon_invweight0: Vec<f64>,
+    pub tendon_lengthspring: Vec<f64>,
     pub body_invweight0: Vec<f64>,
     pub dof_invweight0: Vec<f64>,
     pub actuator_acc0: Vec<f64>,
+    pub eq_data: Vec<f64>,
     pub cam: Vec<([f64; 3], [f64; 3], [f64; 9])>,
     pub light: Vec<([f64; 3], [f64; 3], [f64; 3])>,
     pub stat: mjStatistic,
@@ -43,9 +47,6 @@ pub struct Consts {
 /// set0, setStat and setSpring of mj_setConst, run in `d`.
 pub fn compute(m: &Model, d: &mut Data) -> Result<Consts, EngineError> {
     let (nv, nbody, nu) = (m.raw.nv as usize, m.raw.nbody as usize, m.raw.nu as usize);
-    if m.raw.neq > 0 {
-        return Err(not_implemented("mj_setConst with equality constraints is"));
-    }
     d.qpos.copy_from_slice(m.qpos0());
     kinematics(m, d)?;
     com_pos(m, d)?;
@@ -53,9 +54,10 @@ pub fn compute(m: &Model, d: &mut Data) -> Result<Consts, EngineError> {
     crb(m, d, false);
     let dof_m0: Vec<f64> = (0..nv).map(|i| d.qM[m.dof_Madr()[i] as usize]).collect();
     factor_m(m, d)?;
-    tendon(m)?;
+    tendon(m, d)?;
     transmission(m, d)?;
     let actuator_length0 = d.actuator_length.to_vec();
+    let tendon_length0 = d.ten_length.to_vec();
 
     let jacm = d.arena.alloc(6 * nv)?;
     let tmp = d.arena.alloc(6 * nv)?;
@@ -64,7 +66,15 @@ pub fn compute(m: &Model, d: &mut Data) -> Result<Consts, EngineError> {
     for i in 1..nbody {
         if nv > 0 {
             let (jp, jr) = jacm.split_at_mut(3 * nv);
-            jac(m, d.cdof, d.subtree_com, &row(d.xipos, i), i, Some(jp), Some(jr));
+            jac(
+                m,
+                d.cdof,
+                d.subtree_com,
+                &row(d.xipos, i),
+                i,
+                Some(jp),
+                Some(jr),
+            );
             solve_ld(m, tmp, Some(jacm), 6, d.qLD, d.qLDiagInv);
             mul_mat_mat_t(&mut a, jacm, tmp, 6, nv, 6);
         }
@@ -100,13 +110,24 @@ pub fn compute(m: &Model, d: &mut Data) -> Result<Consts, EngineError> {
         }
     }
 
+    let tendon_invweight0 = tendon_invweight(m, d, tmp)?;
+
     let mut actuator_acc0 = vec![0.0; nu];
     if nv > 0 {
         for (i, acc0) in actuator_acc0.iter_mut().enumerate() {
-            solve_ld(m, tmp, Some(&d.actuator_moment[i * nv..(i + 1) * nv]), 1, d.qLD, d.qLDiagInv);
+            solve_ld(
+                m,
+                tmp,
+                Some(&d.actuator_moment[i * nv..(i + 1) * nv]),
+                1,
+                d.qLD,
+                d.qLDiagInv,
+            );
             *acc0 = dot(&tmp[..nv], &tmp[..nv]).sqrt();
         }
     }
+
+    let eq_data = equality_data(m, d);
 
     let mut cam = Vec::with_capacity(m.raw.ncam as usize);
     for i in 0..m.raw.ncam as usize {
@@ -114,7 +135,11 @@ pub fn compute(m: &Model, d: &mut Data) -> Result<Consts, EngineError> {
         let id1 = m.cam_targetbodyid()[i];
         let xp = row::<3>(d.cam_xpos, i);
         let com = row::<3>(d.subtree_com, if id1 >= 0 { id1 as usize } else { id });
-        cam.push((sub3(&xp, &row(d.xpos, id)), sub3(&xp, &com), row::<9>(d.cam_xmat, i)));
+        cam.push((
+            sub3(&xp, &row(d.xpos, id)),
+            sub3(&xp, &com),
+            row::<9>(d.cam_xmat, i),
+        ));
     }
     let mut light = Vec::with_capacity(m.raw.nlight as usize);
     for i in 0..m.raw.nlight as usize {
@@ -122,7 +147,11 @@ pub fn compute(m: &Model, d: &mut Data) -> Result<Consts, EngineError> {
         let id1 = m.light_targetbodyid()[i];
         let xp = row::<3>(d.light_xpos, i);
         let com = row::<3>(d.subtree_com, if id1 >= 0 { id1 as usize } else { id });
-        light.push((sub3(&xp, &row(d.xpos, id)), sub3(&xp, &com), row::<3>(d.light_xdir, i)));
+        light.push((
+            sub3(&xp, &row(d.xpos, id)),
+            sub3(&xp, &com),
+            row::<3>(d.light_xdir, i),
+        ));
     }
 
     let body = d.arena.alloc(nbody)?;
@@ -132,19 +161,79 @@ pub fn compute(m: &Model, d: &mut Data) -> Result<Consts, EngineError> {
     d.qpos.copy_from_slice(m.qpos_spring());
     kinematics(m, d)?;
     com_pos(m, d)?;
-    tendon(m)?;
+    tendon(m, d)?;
     transmission(m, d)?;
+    let tendon_lengthspring = (m.tendon_lengthspring().iter().zip(d.ten_length.iter()))
+        .map(|(&s, &l)| if s < 0.0 { l } else { s })
+        .collect();
 
     Ok(Consts {
         dof_m0,
         actuator_length0,
+        tendon_length0,
+        tendon_invweight0,
+        tendon_lengthspring,
         body_invweight0,
         dof_invweight0,
         actuator_acc0,
+        eq_data,
         cam,
         light,
         stat,
     })
+}
+
+/// tendon_invweight0 = J M^-1 J' per tendon at qpos0; `tmp` is scratch of 2*nv.
+fn tendon_invweight(m: &Model, d: &Data, tmp: &mut [f64]) -> Result<Vec<f64>, EngineError> {
+    let nv = m.raw.nv as usize;
+    let mut w = m.tendon_invweight0().to_vec();
+    if nv == 0 {
+        return Ok(w);
+    }
+    let sparse = super::jacdif::is_sparse(m);
+    for (i, wi) in w.iter_mut().enumerate() {
+        let (jrow, x) = tmp.split_at_mut(nv);
+        if sparse {
+            jrow.fill(0.0);
+            let adr = d.ten_J_rowadr[i] as usize;
+            for j in adr..adr + d.ten_J_rownnz[i] as usize {
+                jrow[d.ten_J_colind[j] as usize] = d.ten_J[j];
+            }
+        } else {
+            jrow.copy_from_slice(&d.ten_J[i * nv..(i + 1) * nv]);
+        }
+        solve_ld(m, x, Some(jrow), 1, d.qLD, d.qLDiagInv);
+        *wi = dot(jrow, &x[..nv]);
+    }
+    Ok(w)
+}
+
+/// eq_data of connect and weld constraints completed from the qpos0 configuration.
+fn equality_data(m: &Model, d: &Data) -> Vec<f64> {
+    let mut data = m.eq_data().to_vec();
+    for i in 0..m.raw.neq as usize {
+        let id1 = m.eq_obj1id()[i] as usize;
+        let id2 = m.eq_obj2id()[i] as usize;
+        let e = &mut data[mjNEQDATA * i..mjNEQDATA * (i + 1)];
+        let t = m.eq_type()[i];
+        if t == mjtEq_::mjEQ_CONNECT as i32 {
+            let pos = add3(&mul_mat_vec3(&row(d.xmat, id1), &v3(e)), &row(d.xpos, id1));
+            let pos = sub3(&pos, &row(d.xpos, id2));
+            e[3..6].copy_from_slice(&mul_mat_t_vec3(&row(d.xmat, id2), &pos));
+        } else if t == mjtEq_::mjEQ_WELD as i32 {
+            if e[6] != 0.0 || e[7] != 0.0 || e[8] != 0.0 || e[9] != 0.0 {
+                let q = normalize4(&q4(&e[6..])).0;
+                e[6..10].copy_from_slice(&q);
+                continue;
+            }
+            let pos = add3(&mul_mat_vec3(&row(d.xmat, id2), &v3(e)), &row(d.xpos, id2));
+            let pos = sub3(&pos, &row(d.xpos, id1));
+            e[3..6].copy_from_slice(&mul_mat_t_vec3(&row(d.xmat, id1), &pos));
+            let q = mul_quat(&neg_quat(&row(d.xquat, id1)), &row(d.xquat, id2));
+            e[6..10].copy_from_slice(&q);
+        }
+    }
+    data
 }
 
 fn update_box(lo: &mut [f64; 3], hi: &mut [f64; 3], pos: &[f64; 3], r: f64) {
@@ -176,7 +265,11 @@ fn set_stat(m: &Model, d: &Data, body: &mut [f64]) -> mjStatistic {
             rbound = m.geom_rbound()[i];
         } else if m.geom_type()[i] == mjtGeom_::mjGEOM_PLANE as i32 {
             let (s0, s1) = (m.geom_size()[3 * i], m.geom_size()[3 * i + 1]);
-            rbound = if s0 != 0.0 || s1 != 0.0 { (if s0 > s1 { s0 } else { s1 }) * 0.1 } else { 1.0 };
+            rbound = if s0 != 0.0 || s1 != 0.0 {
+                (if s0 > s1 { s0 } else { s1 }) * 0.1
+            } else {
+                1.0
+            };
         } else if m.geom_type()[i] == mjtGeom_::mjGEOM_HFIELD as i32 {
             let j = m.geom_dataid()[i] as usize;
             let h = &m.hfield_size()[4 * j..4 * j + 4];
@@ -205,7 +298,10 @@ fn set_stat(m: &Model, d: &Data, body: &mut [f64]) -> mjStatistic {
         let adr = m.body_geomadr()[i].max(0) as usize;
         for g in adr..adr + m.body_geomnum()[i] as usize {
             if m.geom_rbound()[g] > 0.0 {
-                body[i] = max(body[i], m.geom_rbound()[g] + dist3(&row(d.xipos, i), &row(d.geom_xpos, g)));
+                body[i] = max(
+                    body[i],
+                    m.geom_rbound()[g] + dist3(&row(d.xipos, i), &row(d.geom_xpos, g)),
+                );
             }
         }
     }
@@ -238,9 +334,14 @@ fn set_stat(m: &Model, d: &Data, body: &mut [f64]) -> mjStatistic {
 pub fn store(mm: &mut ModelMut, stat_out: &mut mjStatistic, c: Consts) {
     mm.dof_M0.copy_from_slice(&c.dof_m0);
     mm.actuator_length0.copy_from_slice(&c.actuator_length0);
+    mm.tendon_length0.copy_from_slice(&c.tendon_length0);
+    mm.tendon_invweight0.copy_from_slice(&c.tendon_invweight0);
+    mm.tendon_lengthspring
+        .copy_from_slice(&c.tendon_lengthspring);
     mm.body_invweight0.copy_from_slice(&c.body_invweight0);
     mm.dof_invweight0.copy_from_slice(&c.dof_invweight0);
     mm.actuator_acc0.copy_from_slice(&c.actuator_acc0);
+    mm.eq_data.copy_from_slice(&c.eq_data);
     for (i, (pos0, poscom0, mat0)) in c.cam.iter().enumerate() {
         put(mm.cam_pos0, i, pos0);
         put(mm.cam_poscom0, i, poscom0);

@@ -1,13 +1,22 @@
 //! Frames, names, masses, warnings, energy and data reset.
 
 use super::linalg::{dot, put, row};
-use super::{disabled, enabled, Data, EngineError, Model, JNT_BALL, JNT_FREE, JNT_HINGE, JNT_SLIDE};
+use super::{
+    disabled, enabled, Data, EngineError, Model, JNT_BALL, JNT_FREE, JNT_HINGE, JNT_SLIDE,
+};
 use crate::abi::*;
+use crate::math::misc::decode_pyramid;
 use crate::math::*;
 
 /// Global pose of a frame given relative to `body` (mj_local2Global); `sameframe` 1 copies
 /// the body frame, 2 the inertial frame.
-pub fn local_to_global(d: &Data, pos: &Vec3, quat: &Quat, body: usize, sameframe: u8) -> (Vec3, Mat3) {
+pub fn local_to_global(
+    d: &Data,
+    pos: &Vec3,
+    quat: &Quat,
+    body: usize,
+    sameframe: u8,
+) -> (Vec3, Mat3) {
     match sameframe {
         0 => {
             let p = add3(&mul_mat_vec3(&row(d.xmat, body), pos), &row(d.xpos, body));
@@ -19,21 +28,6 @@ pub fn local_to_global(d: &Data, pos: &Vec3, quat: &Quat, body: usize, sameframe
     }
 }
 
-/// Text of warning `kind` (mju_warningText).
-pub fn warning_text(kind: i32, info: i32) -> String {
-    match kind {
-        0 => format!("Inertia matrix is too close to singular at DOF {info}. Check model."),
-        1 => format!("Pre-allocated contact buffer is full. Increase nconmax above {info}."),
-        2 => format!("Pre-allocated constraint buffer is full. Increase njmax above {info}."),
-        3 => format!("Pre-allocated visual geom buffer is full. Increase maxgeom above {info}."),
-        4 => format!("Nan, Inf or huge value in QPOS at DOF {info}. The simulation is unstable."),
-        5 => format!("Nan, Inf or huge value in QVEL at DOF {info}. The simulation is unstable."),
-        6 => format!("Nan, Inf or huge value in QACC at DOF {info}. The simulation is unstable."),
-        7 => format!("Nan, Inf or huge value in CTRL at ACTUATOR {info}. The simulation is unstable."),
-        _ => format!("Unknown warning type {kind}."),
-    }
-}
-
 /// Counts a warning; reports it through mju_warning the first time (mj_warning).
 pub fn warning(d: &mut mjData, kind: i32, info: i32) -> Result<(), EngineError> {
     if !(0..mjtWarning_::mjNWARNING as i32).contains(&kind) {
@@ -42,7 +36,11 @@ pub fn warning(d: &mut mjData, kind: i32, info: i32) -> Result<(), EngineError> 
     let w = &mut d.warning[kind as usize];
     w.lastinfo = info;
     if w.number == 0 {
-        let text = format!("{} Time = {:.4}.", warning_text(kind, info), d.time);
+        let text = format!(
+            "{} Time = {:.4}.",
+            crate::math::misc::warning_text(kind, info),
+            d.time
+        );
         crate::capi::errmem::warning(&text);
     }
     d.warning[kind as usize].number += 1;
@@ -115,6 +113,13 @@ crate::mjdata_pointers!(zero_data_arrays);
 
 /// mj_resetData on the views: clear header and arrays, qpos = qpos0, mocap from bodies.
 pub fn reset_data(m: &Model, d: &mut Data) {
+    clear_header(d);
+    zero_arrays(d);
+    reset_state(m, d);
+}
+
+/// Clears the header: stack use, diagnostics, sizes, time, energy.
+pub fn clear_header(d: &mut Data) {
     let r = &mut *d.raw;
     r.pstack = 0;
     r.maxuse_stack = 0;
@@ -146,13 +151,60 @@ pub fn reset_data(m: &Model, d: &mut Data) {
     r.ncon = 0;
     r.time = 0.0;
     r.energy = [0.0; 2];
-    zero_arrays(d);
+}
+
+/// Zeroes the inputs and the arrays mj_forward does not fill; qpos = qpos0, mocap from bodies.
+pub fn reset_state(m: &Model, d: &mut Data) {
+    for a in [
+        &mut d.qpos,
+        &mut d.qvel,
+        &mut d.act,
+        &mut d.ctrl,
+        &mut d.qfrc_applied,
+        &mut d.xfrc_applied,
+    ] {
+        a.fill(0.0);
+    }
+    for a in [
+        &mut d.qacc,
+        &mut d.qacc_warmstart,
+        &mut d.act_dot,
+        &mut d.userdata,
+        &mut d.sensordata,
+    ] {
+        a.fill(0.0);
+    }
+    d.mocap_pos.fill(0.0);
+    d.mocap_quat.fill(0.0);
     d.qpos.copy_from_slice(m.qpos0());
     for (i, &id) in m.body_mocapid().iter().enumerate() {
         if id >= 0 {
             put(d.mocap_pos, id as usize, &row::<3>(m.body_pos(), i));
             put(d.mocap_quat, id as usize, &row::<4>(m.body_quat(), i));
         }
+    }
+}
+
+/// mj_resetDataKeyframe: reset, then take time, state, mocap poses and controls from keyframe
+/// `key` when it exists.
+pub fn reset_data_keyframe(m: &Model, d: &mut Data, key: i32) {
+    reset_data(m, d);
+    if key < 0 || key >= m.raw.nkey {
+        return;
+    }
+    let k = key as usize;
+    d.raw.time = m.key_time()[k];
+    let rows = [
+        (&mut d.qpos, m.key_qpos()),
+        (&mut d.qvel, m.key_qvel()),
+        (&mut d.act, m.key_act()),
+        (&mut d.mocap_pos, m.key_mpos()),
+        (&mut d.mocap_quat, m.key_mquat()),
+        (&mut d.ctrl, m.key_ctrl()),
+    ];
+    for (dst, src) in rows {
+        let n = dst.len();
+        dst.copy_from_slice(&src[k * n..(k + 1) * n]);
     }
 }
 
@@ -230,7 +282,10 @@ pub fn set_total_mass(body_mass: &mut [f64], body_inertia: &mut [f64], newmass: 
     for &b in &body_mass[1..] {
         total += b;
     }
-    let scale = super::linalg::max(super::MINVAL, newmass / super::linalg::max(super::MINVAL, total));
+    let scale = super::linalg::max(
+        super::MINVAL,
+        newmass / super::linalg::max(super::MINVAL, total),
+    );
     for i in 1..body_mass.len() {
         body_mass[i] *= scale;
         body_inertia[3 * i] *= scale;
@@ -293,4 +348,97 @@ pub fn energy_vel(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     })?;
     d.raw.energy[1] = e;
     Ok(())
+}
+
+/// Body, global position and orientation of an object with a spatial frame (body, xbody, geom,
+/// site, camera); None for other object types.
+pub fn object_frame(m: &Model, d: &Data, objtype: i32, id: usize) -> Option<(usize, Vec3, Mat3)> {
+    use mjtObj_::*;
+    let t = |o: mjtObj_| o as i32;
+    let (body, pos, mat) = match objtype {
+        x if x == t(mjOBJ_BODY) => (id, d.xipos as &[f64], d.ximat as &[f64]),
+        x if x == t(mjOBJ_XBODY) => (id, &*d.xpos, &*d.xmat),
+        x if x == t(mjOBJ_GEOM) => (m.geom_bodyid()[id] as usize, &*d.geom_xpos, &*d.geom_xmat),
+        x if x == t(mjOBJ_SITE) => (m.site_bodyid()[id] as usize, &*d.site_xpos, &*d.site_xmat),
+        x if x == t(mjOBJ_CAMERA) => (m.cam_bodyid()[id] as usize, &*d.cam_xpos, &*d.cam_xmat),
+        _ => return None,
+    };
+    Some((body, row(pos, id), row(mat, id)))
+}
+
+/// Body, position, com of its tree and optional rotation of an object for the spatial
+/// transforms of mj_objectVelocity / mj_objectAcceleration.
+fn motion_frame(
+    m: &Model,
+    d: &Data,
+    objtype: i32,
+    id: usize,
+    local: bool,
+    caller: &str,
+) -> Result<(usize, Vec3, Vec3, Option<Mat3>), EngineError> {
+    let Some((body, pos, mat)) = object_frame(m, d, objtype, id) else {
+        return Err(EngineError(format!(
+            "Invalid object type {objtype} in {caller}"
+        )));
+    };
+    let com = row(d.subtree_com, m.body_rootid()[body] as usize);
+    Ok((body, pos, com, local.then_some(mat)))
+}
+
+/// 6D velocity [rotation; translation] of an object, global or in its frame (mj_objectVelocity).
+pub fn object_velocity(
+    m: &Model,
+    d: &Data,
+    objtype: i32,
+    id: usize,
+    local: bool,
+) -> Result<Vec6, EngineError> {
+    let (body, pos, com, rot) = motion_frame(m, d, objtype, id, local, "mj_objectVelocity")?;
+    Ok(transform_spatial(
+        &row(d.cvel, body),
+        false,
+        &pos,
+        &com,
+        rot.as_ref(),
+    ))
+}
+
+/// 6D acceleration of an object, with the centripetal term of the linear part; needs `cacc`
+/// from mj_rnePostConstraint (mj_objectAcceleration).
+pub fn object_acceleration(
+    m: &Model,
+    d: &Data,
+    objtype: i32,
+    id: usize,
+    local: bool,
+) -> Result<Vec6, EngineError> {
+    let (body, pos, com, rot) = motion_frame(m, d, objtype, id, local, "mj_objectAcceleration")?;
+    let vel = transform_spatial(&row(d.cvel, body), false, &pos, &com, rot.as_ref());
+    let mut acc = transform_spatial(&row(d.cacc, body), false, &pos, &com, rot.as_ref());
+    let c = cross(&v3(&vel[..3]), &v3(&vel[3..]));
+    for k in 0..3 {
+        acc[3 + k] += c[k];
+    }
+    Ok(acc)
+}
+
+/// Force:torque of contact `id` in the contact frame; zero for an invalid or excluded contact
+/// (mj_contactForce).
+pub fn contact_force(m: &Model, d: &Data, id: i32) -> Vec6 {
+    let mut res = [0.0; 6];
+    if id < 0 || id >= d.raw.ncon {
+        return res;
+    }
+    let con = &d.contact[id as usize];
+    if con.efc_address < 0 {
+        return res;
+    }
+    let adr = con.efc_address as usize;
+    let dim = con.dim.max(0) as usize;
+    if m.raw.opt.cone == mjtCone_::mjCONE_PYRAMIDAL as i32 {
+        decode_pyramid(&mut res, &d.efc_force[adr..], &con.friction, dim);
+    } else {
+        res[..dim].copy_from_slice(&d.efc_force[adr..adr + dim]);
+    }
+    res
 }

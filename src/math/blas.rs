@@ -89,21 +89,20 @@ pub fn add_scl(res: &mut [f64], a: &[f64], b: &[f64], s: f64) {
 /// over blocks of four, then the remainder (MuJoCo's order).
 pub fn dot(a: &[f64], b: &[f64], n: usize) -> f64 {
     let (a, b) = (&a[..n], &b[..n]);
-    let blocks = n / 4;
     let mut p = [0.0f64; 4];
-    for k in 0..blocks {
-        let i = 4 * k;
-        p[0] += a[i] * b[i];
-        p[1] += a[i + 1] * b[i + 1];
-        p[2] += a[i + 2] * b[i + 2];
-        p[3] += a[i + 3] * b[i + 3];
+    let (ca, cb) = (a.chunks_exact(4), b.chunks_exact(4));
+    let (ra, rb) = (ca.remainder(), cb.remainder());
+    for (x, y) in ca.zip(cb) {
+        p[0] += x[0] * y[0];
+        p[1] += x[1] * y[1];
+        p[2] += x[2] * y[2];
+        p[3] += x[3] * y[3];
     }
     let mut s = (p[0] + p[2]) + (p[1] + p[3]);
-    let i = 4 * blocks;
-    match n - i {
-        3 => s += a[i] * b[i] + a[i + 1] * b[i + 1] + a[i + 2] * b[i + 2],
-        2 => s += a[i] * b[i] + a[i + 1] * b[i + 1],
-        1 => s += a[i] * b[i],
+    match ra.len() {
+        3 => s += ra[0] * rb[0] + ra[1] * rb[1] + ra[2] * rb[2],
+        2 => s += ra[0] * rb[0] + ra[1] * rb[1],
+        1 => s += ra[0] * rb[0],
         _ => {}
     }
     s

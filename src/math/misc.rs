@@ -189,10 +189,16 @@ pub fn sign(x: f64) -> f64 {
 pub fn round(x: f64) -> i32 {
     let lo = x.floor();
     let hi = x.ceil();
-    if x - lo < hi - x {
-        lo as i32
+    to_int(if x - lo < hi - x { lo } else { hi })
+}
+
+/// double-to-int conversion as C performs it on x86-64: NaN and out-of-range values give
+/// i32::MIN (the "integer indefinite" value), where Rust's `as` would saturate.
+pub fn to_int(v: f64) -> i32 {
+    if (-2147483648.0..2147483648.0).contains(&v) {
+        v as i32
     } else {
-        hi as i32
+        i32::MIN
     }
 }
 

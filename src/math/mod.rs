@@ -1,16 +1,29 @@
-//! Spatial algebra, quaternions, small dense and sparse linear algebra.
+//! Spatial algebra, quaternions, small dense and sparse linear algebra, and geometry.
 //!
 //! Everything here reproduces the arithmetic of MuJoCo 2.2.2 operation by operation,
-//! so that results agree bit for bit with the reference.
+//! so that results agree bit for bit with the reference:
+//! - `vec3`, `quat`, `spatial`: 3D vectors/matrices, quaternions and poses, 6D spatial algebra
+//!   (engine_util_spatial.c, engine_util_blas.c fixed-size part);
+//! - `blas`, `chol`, `eig3`, `qcqp`, `misc`: mju_ vector/matrix operations, dense Cholesky,
+//!   eigen-decomposition, small QCQPs, actuator curves and scalar helpers;
+//! - `sparse`, `chol_sparse`: row-sparse matrices, sparse Cholesky and LU (engine_util_sparse.c,
+//!   engine_util_solve.c);
+//! - `wrap`: tendon wrapping (mju_wrap);
 
 pub mod blas;
 pub mod chol;
+pub mod chol_sparse;
 pub mod eig3;
 pub mod misc;
 pub mod qcqp;
 pub mod quat;
+pub mod sparse;
 pub mod spatial;
 pub mod vec3;
+pub mod wrap;
+
+#[cfg(test)]
+mod tests;
 
 pub use eig3::{eig3, Eig3};
 pub use quat::*;

@@ -3,12 +3,28 @@
 //! bounding spheres with margin). Any pair that survives would need a narrow-phase routine,
 //! which this slice does not have yet: that is reported as not implemented.
 
-use super::linalg::{max, row};
-use super::{disabled, enabled, Data, EngineError, Model};
+use crate::engine::linalg::{max, row};
+
+pub mod boxes;
+pub mod convex;
+pub mod mpr;
+pub mod primitive;
+#[cfg(test)]
+mod tests;
 use crate::abi::*;
+use crate::engine::{disabled, enabled, Data, EngineError, Model};
 use crate::math::*;
 
-const TYPE_NAMES: [&str; 8] = ["plane", "hfield", "sphere", "capsule", "ellipsoid", "cylinder", "box", "mesh"];
+const TYPE_NAMES: [&str; 8] = [
+    "plane",
+    "hfield",
+    "sphere",
+    "capsule",
+    "ellipsoid",
+    "cylinder",
+    "box",
+    "mesh",
+];
 
 /// Does 2.2.2 have a collision routine for these (ordered) geom types?
 fn has_collider(t1: i32, t2: i32) -> bool {
@@ -31,8 +47,18 @@ fn plane_dist(d: &Data, plane: usize, g: usize) -> f64 {
 }
 
 /// Runs the filters of mj_collideGeoms; Err when the pair reaches the narrow phase.
-fn test_pair(m: &Model, d: &Data, g1: usize, g2: usize, pair: Option<usize>) -> Result<(), EngineError> {
-    let (g1, g2) = if m.geom_type()[g1] > m.geom_type()[g2] { (g2, g1) } else { (g1, g2) };
+fn test_pair(
+    m: &Model,
+    d: &Data,
+    g1: usize,
+    g2: usize,
+    pair: Option<usize>,
+) -> Result<(), EngineError> {
+    let (g1, g2) = if m.geom_type()[g1] > m.geom_type()[g2] {
+        (g2, g1)
+    } else {
+        (g1, g2)
+    };
     let (t1, t2) = (m.geom_type()[g1], m.geom_type()[g2]);
     if !has_collider(t1, t2) {
         return Ok(());
@@ -43,7 +69,8 @@ fn test_pair(m: &Model, d: &Data, g1: usize, g2: usize, pair: Option<usize>) -> 
             let weld2 = m.body_weldid()[m.geom_bodyid()[g2] as usize];
             let wparent1 = m.body_weldid()[m.body_parentid()[weld1 as usize] as usize];
             let wparent2 = m.body_weldid()[m.body_parentid()[weld2 as usize] as usize];
-            let filterparent = !disabled(m, mjtDisableBit_::mjDSBL_FILTERPARENT) && weld1 != 0 && weld2 != 0;
+            let filterparent =
+                !disabled(m, mjtDisableBit_::mjDSBL_FILTERPARENT) && weld1 != 0 && weld2 != 0;
             let (ct1, ca1) = (m.geom_contype()[g1], m.geom_conaffinity()[g1]);
             let (ct2, ca2) = (m.geom_contype()[g2], m.geom_conaffinity()[g2]);
             if (ct1 & ca2) == 0 && (ct2 & ca1) == 0 {
@@ -61,7 +88,10 @@ fn test_pair(m: &Model, d: &Data, g1: usize, g2: usize, pair: Option<usize>) -> 
     };
     let margin = assign_margin(m, margin);
     let (r1, r2) = (m.geom_rbound()[g1], m.geom_rbound()[g2]);
-    if r1 > 0.0 && r2 > 0.0 && dist3(&row(d.geom_xpos, g1), &row(d.geom_xpos, g2)) > r1 + r2 + margin {
+    if r1 > 0.0
+        && r2 > 0.0
+        && dist3(&row(d.geom_xpos, g1), &row(d.geom_xpos, g2)) > r1 + r2 + margin
+    {
         return Ok(());
     }
     let plane = mjtGeom_::mjGEOM_PLANE as i32;
@@ -99,7 +129,13 @@ pub fn collision(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     let pair_only = mode == mjtCollision_::mjCOL_PAIR as i32;
     if !dynamic_only {
         for p in 0..m.raw.npair as usize {
-            test_pair(m, d, m.pair_geom1()[p] as usize, m.pair_geom2()[p] as usize, Some(p))?;
+            test_pair(
+                m,
+                d,
+                m.pair_geom1()[p] as usize,
+                m.pair_geom2()[p] as usize,
+                Some(p),
+            )?;
         }
     }
     if pair_only {
@@ -127,7 +163,8 @@ pub fn collision(m: &Model, d: &mut Data) -> Result<(), EngineError> {
                 && (0..m.raw.npair as usize).any(|p| {
                     m.pair_signature()[p] == signature
                         && ((m.pair_geom1()[p] as usize == g1 && m.pair_geom2()[p] as usize == g2)
-                            || (m.pair_geom1()[p] as usize == g2 && m.pair_geom2()[p] as usize == g1))
+                            || (m.pair_geom1()[p] as usize == g2
+                                && m.pair_geom2()[p] as usize == g1))
                 });
             if merged {
                 continue;

@@ -1,0 +1,165 @@
+// Comparator: the reference's records against ours, worst relative error per quantity.
+//
+// Relative error of two numbers a (reference) and b (ours):
+//     err(a, b) = |a - b| / max(1, |a|, |b|)
+// i.e. relative for magnitudes above 1 and absolute below (floor 1). Both NaN: 0; one NaN or
+// infinite where the other is not: inf. Quaternion records ('q') take the better of q and -q.
+// Integers, bytes and strings must match exactly (else inf). Self-check residuals ('s') report
+// the larger of the two sides' residuals. A quantity's error is the maximum over its elements
+// and instances (states, objects); it passes when that is <= the group's tolerance.
+
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "binfile.h"
+
+inline double rel_err(double a, double b) {
+  if (std::isnan(a) || std::isnan(b)) return (std::isnan(a) && std::isnan(b)) ? 0 : INFINITY;
+  if (a == b) return 0;
+  if (std::isinf(a) || std::isinf(b)) return INFINITY;
+  return std::fabs(a - b) / std::max({1.0, std::fabs(a), std::fabs(b)});
+}
+
+struct Worst {
+  double err = 0;
+  std::string where;
+  size_t n = 0;  // elements compared
+};
+
+// Error of one record pair; where = element index and values at the worst element.
+inline double rec_err(const Rec& a, const Rec& b, std::string& where) {
+  char buf[160];
+  if (a.type != b.type || a.bytes.size() != b.bytes.size()) {
+    std::snprintf(buf, sizeof buf, "type/size: ref %c/%zu ours %c/%zu", a.type, a.count(), b.type,
+                  b.count());
+    where = buf;
+    return INFINITY;
+  }
+  double worst = 0;
+  size_t at = 0, n = a.count();
+  auto note = [&](size_t i, double e) {
+    if (e > worst || (std::isnan(e) && !std::isnan(worst))) {
+      worst = e;
+      at = i;
+    }
+  };
+  switch (a.type) {
+    case 'd':
+      for (size_t i = 0; i < n; i++) note(i, rel_err(a.d()[i], b.d()[i]));
+      break;
+    case 'f':
+      for (size_t i = 0; i < n; i++) note(i, rel_err(a.f()[i], b.f()[i]));
+      break;
+    case 's':
+      for (size_t i = 0; i < n; i++) note(i, std::max(a.d()[i], b.d()[i]));
+      break;
+    case 'q':
+      for (size_t i = 0; i + 3 < n; i += 4) {
+        double plus = 0, minus = 0;
+        for (int j = 0; j < 4; j++) {
+          plus = std::max(plus, rel_err(a.d()[i + j], b.d()[i + j]));
+          minus = std::max(minus, rel_err(a.d()[i + j], -b.d()[i + j]));
+        }
+        note(i, std::min(plus, minus));
+      }
+      break;
+    case 'i':
+      for (size_t i = 0; i < n; i++) note(i, a.i()[i] == b.i()[i] ? 0 : INFINITY);
+      break;
+    default:
+      for (size_t i = 0; i < n; i++) note(i, a.bytes[i] == b.bytes[i] ? 0 : INFINITY);
+  }
+  if (worst > 0) {
+    if (a.type == 'd' || a.type == 'q' || a.type == 's')
+      std::snprintf(buf, sizeof buf, "[%zu] ref %.17g ours %.17g", at, a.d()[at], b.d()[at]);
+    else if (a.type == 'f')
+      std::snprintf(buf, sizeof buf, "[%zu] ref %.9g ours %.9g", at, a.f()[at], b.f()[at]);
+    else if (a.type == 'i')
+      std::snprintf(buf, sizeof buf, "[%zu] ref %d ours %d", at, a.i()[at], b.i()[at]);
+    else if (a.type == 'c')
+      std::snprintf(buf, sizeof buf, "ref \"%.60s\" ours \"%.60s\"",
+                    std::string(a.bytes.begin(), a.bytes.end()).c_str(),
+                    std::string(b.bytes.begin(), b.bytes.end()).c_str());
+    else
+      std::snprintf(buf, sizeof buf, "[%zu] ref %d ours %d", at, a.bytes[at], b.bytes[at]);
+    where = buf;
+  }
+  return worst;
+}
+
+inline std::string read_status(const std::string& path) {
+  FILE* fp = std::fopen(path.c_str(), "r");
+  if (!fp) return "no result (not run)";
+  char buf[1200] = {0};
+  size_t n = std::fread(buf, 1, sizeof buf - 1, fp);
+  std::fclose(fp);
+  std::string s(buf, n);
+  while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
+  return s.empty() ? "no result (empty status)" : s;
+}
+
+// Compares one check group; prints per-quantity lines (all, or failing only). Returns pass.
+inline bool compare_group(const std::string& dir, const std::string& group, double tol,
+                          bool verbose, double* group_worst) {
+  std::string ref_status = read_status(dir + "/ref/" + group + ".status");
+  std::string our_status = read_status(dir + "/ours/" + group + ".status");
+  *group_worst = INFINITY;
+  if (ref_status != "ok") {
+    std::printf("  %-16s FAIL  reference run: %s\n", group.c_str(), ref_status.c_str());
+    return false;
+  }
+  if (our_status != "ok") {
+    std::printf("  %-16s FAIL  %s\n", group.c_str(), our_status.c_str());
+    return false;
+  }
+  Reader ref, ours;
+  if (!ref.load(dir + "/ref/" + group + ".bin") || !ours.load(dir + "/ours/" + group + ".bin")) {
+    std::printf("  %-16s FAIL  unreadable result file\n", group.c_str());
+    return false;
+  }
+  std::vector<std::string> order;
+  std::map<std::string, Worst> per;
+  for (const Rec& a : ref.recs) {
+    if (a.type == 'r' || a.type == 'o') continue;
+    std::string q = a.name.substr(0, a.name.find('#'));
+    if (!per.count(q)) order.push_back(q);
+    Worst& w = per[q];
+    const Rec* b = ours.get(a.name);
+    std::string where;
+    double e = b ? rec_err(a, *b, where) : INFINITY;
+    if (!b) where = "missing in ours";
+    w.n += a.count();
+    if (e > w.err || (std::isnan(e) && !std::isnan(w.err)) || (w.where.empty() && e > 0)) {
+      w.err = e;
+      w.where = a.name + " " + where;
+    }
+  }
+  bool pass = true;
+  double gw = 0;
+  std::string gq;
+  int nfail = 0;
+  for (const std::string& q : order) {
+    const Worst& w = per[q];
+    bool ok = w.err <= tol;
+    if (!ok) nfail++;
+    pass = pass && ok;
+    if (!(w.err <= gw)) {
+      gw = w.err;
+      gq = q;
+    }
+    if (verbose || !ok)
+      std::printf("  %-16s %-6s %-28s %9.2e  (n=%zu)%s%s\n", group.c_str(), ok ? "ok" : "FAIL",
+                  q.c_str(), w.err, w.n, w.err > 0 ? "  worst at " : "", w.err > 0 ? w.where.c_str() : "");
+  }
+  *group_worst = gw;
+  std::printf("  %-16s %-6s %zu quantities, %d failing, worst %.2e%s%s (tol %.0e)\n", group.c_str(),
+              pass ? "PASS" : "FAIL", order.size(), nfail, gw, gq.empty() ? "" : " in ",
+              gq.c_str(), tol);
+  return pass;
+}

@@ -1,0 +1,294 @@
+//! Unit tests of the narrow phase: geometric properties of the contacts each pair produces.
+
+use crate::math::*;
+
+fn close(a: &[f64], b: &[f64], tol: f64) -> bool {
+    a.iter().zip(b).all(|(x, y)| (x - y).abs() <= tol)
+}
+
+#[test]
+fn mpr_spheres_and_boxes() {
+    use super::mpr::*;
+    let sphere = |c: Vec3, r: f64| {
+        move |d: &Vec3| {
+            let n = norm3(d);
+            [
+                c[0] + r * d[0] / n,
+                c[1] + r * d[1] / n,
+                c[2] + r * d[2] / n,
+            ]
+        }
+    };
+    // overlapping spheres along x: depth 0.3, direction +-x
+    let mut pair = ConvexPair {
+        center1: [0.0; 3],
+        center2: [0.9, 0.0, 0.0],
+        support1: sphere([0.0; 3], 0.5),
+        support2: sphere([0.9, 0.0, 0.0], 0.7),
+        max_iterations: 50,
+        tolerance: 1e-9,
+    };
+    let (depth, dir, pos) = pair.mpr_penetration().unwrap();
+    assert!((depth - 0.3).abs() < 1e-6, "{depth}");
+    assert!((dir[0].abs() - 1.0).abs() < 1e-6 && dir[1].abs() < 1e-3 && dir[2].abs() < 1e-3);
+    assert!((pos[0] - 0.35).abs() < 1e-3, "{pos:?}");
+
+    // separated boxes: no penetration
+    let cube = |c: Vec3, h: f64| {
+        move |d: &Vec3| {
+            let s = |x: f64| if x >= 0.0 { h } else { -h };
+            [c[0] + s(d[0]), c[1] + s(d[1]), c[2] + s(d[2])]
+        }
+    };
+    let mut apart = ConvexPair {
+        center1: [0.0; 3],
+        center2: [0.0, 0.0, 1.5],
+        support1: cube([0.0; 3], 0.5),
+        support2: cube([0.0, 0.0, 1.5], 0.5),
+        max_iterations: 50,
+        tolerance: 1e-6,
+    };
+    assert!(apart.mpr_penetration().is_none());
+
+    let (d2, w) = point_tri_dist2(
+        &[0.2, 0.2, 1.0],
+        &[0.0; 3],
+        &[1.0, 0.0, 0.0],
+        &[0.0, 1.0, 0.0],
+    );
+    assert!((d2 - 1.0).abs() < 1e-15 && close(&w, &[0.2, 0.2, 0.0], 1e-15));
+    let (d2, w) = point_segment_dist2(&[2.0, 1.0, 0.0], &[0.0; 3], &[1.0, 0.0, 0.0]);
+    assert_eq!((d2, w), (2.0, [1.0, 0.0, 0.0]));
+    assert!(eq(1.0, 1.0 + f64::EPSILON / 2.0) && !eq(1.0, 1.0 + 4.0 * f64::EPSILON));
+}
+
+#[test]
+fn primitive_collisions() {
+    use super::primitive::*;
+    let eye = [1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0];
+    let plane = GeomPose {
+        pos: [0.0; 3],
+        mat: eye,
+        size: [0.0; 3],
+    };
+    let mut con = [ContactGeom::default(); 4];
+
+    let ball = GeomPose {
+        pos: [0.0, 0.0, 0.08],
+        mat: eye,
+        size: [0.1, 0.0, 0.0],
+    };
+    assert_eq!(plane_sphere(&plane, &ball, 0.0, &mut con), 1);
+    assert!((con[0].dist + 0.02).abs() < 1e-15);
+    assert!(close(&con[0].pos, &[0.0, 0.0, -0.01], 1e-15));
+    assert_eq!(con[0].frame, [0.0, 0.0, 1.0, 0.0, 0.0, 0.0]);
+
+    // box resting 1 mm into the plane: four corners
+    let cube = GeomPose {
+        pos: [0.0, 0.0, 0.099],
+        mat: eye,
+        size: [0.1; 3],
+    };
+    assert_eq!(plane_box(&plane, &cube, 0.0, &mut con), 4);
+    assert!(con.iter().all(|c| (c.dist + 0.001).abs() < 1e-12));
+
+    // vertical capsule: only the lower end touches, tangent along the axis
+    let cap = GeomPose {
+        pos: [0.0, 0.0, 0.25],
+        mat: eye,
+        size: [0.05, 0.2, 0.0],
+    };
+    assert_eq!(plane_capsule(&plane, &cap, 0.01, &mut con), 1);
+    assert_eq!(&con[0].frame[3..], &[0.0, 0.0, 1.0]);
+
+    // cylinder standing on its disk: one rim point and two more of the inscribed triangle
+    let cyl = GeomPose {
+        pos: [0.0, 0.0, 0.099],
+        mat: eye,
+        size: [0.2, 0.1, 0.0],
+    };
+    assert_eq!(plane_cylinder(&plane, &cyl, 0.0, &mut con), 3);
+
+    // parallel capsules side by side: two contacts
+    let c1 = GeomPose {
+        pos: [0.0; 3],
+        mat: eye,
+        size: [0.1, 0.3, 0.0],
+    };
+    let c2 = GeomPose {
+        pos: [0.15, 0.0, 0.0],
+        mat: eye,
+        size: [0.1, 0.3, 0.0],
+    };
+    assert_eq!(capsule_capsule(&c1, &c2, 0.0, &mut con), 2);
+    assert!((con[0].dist + 0.05).abs() < 1e-15 && con[0].normal() == [1.0, 0.0, 0.0]);
+
+    let s = GeomPose {
+        pos: [0.0, 0.12, 0.2],
+        mat: eye,
+        size: [0.05, 0.0, 0.0],
+    };
+    assert_eq!(sphere_capsule(&s, &c1, 0.0, &mut con), 1);
+    assert!((con[0].dist + 0.03).abs() < 1e-15);
+    assert_eq!(sphere_sphere(&s, &ball, 0.0, &mut con), 0);
+}
+
+#[test]
+fn box_collisions() {
+    use super::boxes::*;
+    use super::primitive::*;
+    let eye = [1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0];
+    let mut con = [ContactGeom::default(); MAX_BOX_CONTACTS];
+
+    // stacked cubes overlapping by 1 cm: four corner contacts; 2.2.2 reports half the depth
+    let b1 = GeomPose {
+        pos: [0.0; 3],
+        mat: eye,
+        size: [0.5; 3],
+    };
+    let b2 = GeomPose {
+        pos: [0.1, 0.05, 0.69],
+        mat: eye,
+        size: [0.2; 3],
+    };
+    let n = box_box(&b1, &b2, 0.0, &mut con);
+    assert!(n >= 4, "{n}");
+    for c in &con[..n] {
+        assert!((c.dist + 0.0).abs() <= 0.0101 && c.dist < 0.0, "{c:?}");
+        assert!((c.normal()[2].abs() - 1.0).abs() < 1e-12);
+    }
+    let far = GeomPose {
+        pos: [0.0, 0.0, 2.0],
+        ..b2
+    };
+    assert_eq!(box_box(&b1, &far, 0.0, &mut con), 0);
+
+    // sphere resting on a box face, capsule lying on it
+    let s = GeomPose {
+        pos: [0.0, 0.0, 0.59],
+        mat: eye,
+        size: [0.1, 0.0, 0.0],
+    };
+    assert_eq!(sphere_box(&s, &b1, 0.0, &mut con), 1);
+    assert!((con[0].dist + 0.01).abs() < 1e-12, "{:?}", con[0]);
+    assert!(close(&con[0].normal(), &[0.0, 0.0, -1.0], 1e-15));
+    let lying = [1.0, 0.0, 0.0, 0.0, 0.0, -1.0, 0.0, 1.0, 0.0];
+    let cap = GeomPose {
+        pos: [0.0, 0.0, 0.59],
+        mat: lying,
+        size: [0.1, 0.2, 0.0],
+    };
+    assert_eq!(capsule_box(&cap, &b1, 0.0, &mut con), 2);
+    assert!(con[..2].iter().all(|c| (c.dist + 0.01).abs() < 1e-12));
+}
+
+#[test]
+fn convex_collisions() {
+    use super::convex::*;
+    use super::primitive::*;
+    let eye = [1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0];
+    let opt = MprOptions {
+        iterations: 50,
+        tolerance: 1e-6,
+    };
+    let mut con = [ContactGeom::default(); 5];
+    let ball = ConvexGeom {
+        shape: Shape::Sphere,
+        pose: GeomPose {
+            pos: [0.0, 0.0, 0.29],
+            mat: eye,
+            size: [0.1, 0.0, 0.0],
+        },
+        rbound: 0.1,
+    };
+    let block = ConvexGeom {
+        shape: Shape::Box,
+        pose: GeomPose {
+            pos: [0.0; 3],
+            mat: eye,
+            size: [0.2; 3],
+        },
+        rbound: 0.35,
+    };
+    assert_eq!(convex(&ball, &block, 0.0, &opt, true, &mut con), 1);
+    assert!((con[0].dist + 0.01).abs() < 1e-5, "{:?}", con[0]);
+    assert!(close(&con[0].normal(), &[0.0, 0.0, -1.0], 1e-6));
+
+    // mesh tetrahedron above a plane, one vertex below it
+    let vert: [f32; 12] = [0.0, 0.0, -0.05, 0.3, 0.0, 0.1, 0.0, 0.3, 0.1, 0.1, 0.1, 0.3];
+    let tet = ConvexGeom {
+        shape: Shape::Mesh(MeshData {
+            vert: &vert,
+            graph: None,
+        }),
+        pose: GeomPose {
+            pos: [0.0; 3],
+            mat: eye,
+            size: [0.0; 3],
+        },
+        rbound: 0.4,
+    };
+    let plane = GeomPose {
+        pos: [0.0; 3],
+        mat: eye,
+        size: [0.0; 3],
+    };
+    let mut pc = [ContactGeom::default(); 3];
+    assert_eq!(plane_convex(&plane, &tet, 0.0, &mut pc), 1);
+    assert_eq!(pc[0].dist, -0.05000000074505806);
+    let mut idx = -1;
+    assert_eq!(
+        support(&tet, &[1.0, 0.0, 0.0], 0.0, &mut idx),
+        [0.30000001192092896, 0.0, 0.10000000149011612]
+    );
+    assert_eq!(idx, 1);
+}
+
+#[test]
+fn heightfield_collision() {
+    use super::convex::*;
+    use super::primitive::*;
+    let eye = [1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0];
+    let data = [0.5f32; 16];
+    let hf = HField {
+        size: [1.0, 1.0, 0.2, 0.1],
+        nrow: 4,
+        ncol: 4,
+        data: &data,
+    };
+    let ground = GeomPose {
+        pos: [0.0; 3],
+        mat: eye,
+        size: [0.0; 3],
+    };
+    let ball = ConvexGeom {
+        shape: Shape::Sphere,
+        pose: GeomPose {
+            pos: [0.1, 0.2, 0.19],
+            mat: eye,
+            size: [0.1, 0.0, 0.0],
+        },
+        rbound: 0.1,
+    };
+    let opt = MprOptions {
+        iterations: 50,
+        tolerance: 1e-6,
+    };
+    let mut con = [ContactGeom::default(); MAX_CONTACT_PAIR];
+    let n = convex_hfield(&hf, &ground, &ball, 0.0, &opt, &mut con);
+    assert!(n >= 1);
+    // flat surface at z = 0.1: the sphere sinks 1 cm
+    assert!(
+        con[..n].iter().all(|c| (c.dist + 0.01).abs() < 1e-5),
+        "{:?}",
+        &con[..n]
+    );
+    let high = ConvexGeom {
+        pose: GeomPose {
+            pos: [0.1, 0.2, 0.5],
+            ..ball.pose
+        },
+        ..ball
+    };
+    assert_eq!(convex_hfield(&hf, &ground, &high, 0.0, &opt, &mut con), 0);
+}

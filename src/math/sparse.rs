@@ -1,0 +1,422 @@
+//! Sparse row-compressed matrices: row i holds `rownnz[i]` values at `mat[rowadr[i]..]` with
+//! increasing column indices `colind[rowadr[i]..]`. Index arrays are `i32` as in mjData.
+//! Summation orders are those of 2.2.2's scalar (non-AVX) build.
+
+#[inline]
+fn u(i: i32) -> usize {
+    i as usize
+}
+
+/// vec1 (sparse, nnz1 values at indices ind1) . vec2 (dense), summed left to right.
+pub fn dot_sparse(vec1: &[f64], vec2: &[f64], nnz1: usize, ind1: &[i32]) -> f64 {
+    let mut s = 0.0;
+    for i in 0..nnz1 {
+        s += vec1[i] * vec2[u(ind1[i])];
+    }
+    s
+}
+
+/// Dot product of two sparse vectors.
+pub fn dot_sparse2(
+    vec1: &[f64],
+    vec2: &[f64],
+    nnz1: usize,
+    ind1: &[i32],
+    nnz2: usize,
+    ind2: &[i32],
+) -> f64 {
+    let (mut i1, mut i2) = (0, 0);
+    let mut s = 0.0;
+    while i1 < nnz1 && i2 < nnz2 {
+        let (a1, a2) = (ind1[i1], ind2[i2]);
+        if a1 == a2 {
+            s += vec1[i1] * vec2[i2];
+            i1 += 1;
+            i2 += 1;
+        } else if a1 < a2 {
+            i1 += 1;
+        } else {
+            i2 += 1;
+        }
+    }
+    s
+}
+
+/// Dense nr x nc matrix to compressed sparse (exact zeros dropped).
+pub fn dense2sparse(
+    res: &mut [f64],
+    mat: &[f64],
+    nr: usize,
+    nc: usize,
+    rownnz: &mut [i32],
+    rowadr: &mut [i32],
+    colind: &mut [i32],
+) {
+    let mut adr = 0;
+    for r in 0..nr {
+        rownnz[r] = 0;
+        rowadr[r] = adr as i32;
+        for c in 0..nc {
+            let v = mat[r * nc + c];
+            if v != 0.0 {
+                colind[adr] = c as i32;
+                rownnz[r] += 1;
+                res[adr] = v;
+                adr += 1;
+            }
+        }
+    }
+}
+
+/// Sparse to dense nr x nc.
+pub fn sparse2dense(
+    res: &mut [f64],
+    mat: &[f64],
+    nr: usize,
+    nc: usize,
+    rownnz: &[i32],
+    rowadr: &[i32],
+    colind: &[i32],
+) {
+    res[..nr * nc].fill(0.0);
+    for r in 0..nr {
+        let adr = u(rowadr[r]);
+        for i in 0..u(rownnz[r]) {
+            res[r * nc + u(colind[adr + i])] = mat[adr + i];
+        }
+    }
+}
+
+/// res (nr) = sparse mat * dense vec.
+pub fn mul_mat_vec_sparse(
+    res: &mut [f64],
+    mat: &[f64],
+    vec: &[f64],
+    nr: usize,
+    rownnz: &[i32],
+    rowadr: &[i32],
+    colind: &[i32],
+) {
+    for r in 0..nr {
+        let adr = u(rowadr[r]);
+        res[r] = dot_sparse(&mat[adr..], vec, u(rownnz[r]), &colind[adr..]);
+    }
+}
+
+/// res = res*a + vec*b
+fn add_to_scl_scl(res: &mut [f64], vec: &[f64], a: f64, b: f64) {
+    for (r, v) in res.iter_mut().zip(vec) {
+        *r = *r * a + v * b;
+    }
+}
+
+/// dst = a*dst + b*src for sparse vectors of dimension n; the pattern of dst becomes the union.
+/// `buf`/`buf_ind` are scratch of at least dst_nnz. Returns the new nnz of dst.
+#[allow(clippy::too_many_arguments)]
+pub fn combine_sparse(
+    dst: &mut [f64],
+    src: &[f64],
+    n: usize,
+    a: f64,
+    b: f64,
+    dst_nnz: usize,
+    src_nnz: usize,
+    dst_ind: &mut [i32],
+    src_ind: &[i32],
+    buf: &mut [f64],
+    buf_ind: &mut [i32],
+) -> usize {
+    if dst_nnz == src_nnz && dst_ind[..dst_nnz] == src_ind[..src_nnz] {
+        add_to_scl_scl(&mut dst[..dst_nnz], &src[..dst_nnz], a, b);
+        return dst_nnz;
+    }
+    buf[..dst_nnz].copy_from_slice(&dst[..dst_nnz]);
+    buf_ind[..dst_nnz].copy_from_slice(&dst_ind[..dst_nnz]);
+
+    let end = n as i32 + 1;
+    let (mut bi, mut si, mut nnz) = (0, 0, 0);
+    let adr = |ind: &[i32], i: usize, len: usize| if i < len { ind[i] } else { end };
+    let mut badr = adr(buf_ind, bi, dst_nnz);
+    let mut sadr = adr(src_ind, si, src_nnz);
+    while bi < dst_nnz || si < src_nnz {
+        if badr == sadr {
+            dst[nnz] = a * buf[bi] + b * src[si];
+            dst_ind[nnz] = badr;
+            bi += 1;
+            si += 1;
+            badr = adr(buf_ind, bi, dst_nnz);
+            sadr = adr(src_ind, si, src_nnz);
+        } else if badr < sadr {
+            dst[nnz] = a * buf[bi];
+            dst_ind[nnz] = badr;
+            bi += 1;
+            badr = adr(buf_ind, bi, dst_nnz);
+        } else {
+            dst[nnz] = b * src[si];
+            dst_ind[nnz] = sadr;
+            si += 1;
+            sadr = adr(src_ind, si, src_nnz);
+        }
+        nnz += 1;
+    }
+    nnz
+}
+
+/// dst = a*dst + b*src where the pattern of src is contained in that of dst.
+#[allow(clippy::too_many_arguments)]
+pub fn combine_sparse_inc(
+    dst: &mut [f64],
+    src: &[f64],
+    n: usize,
+    a: f64,
+    b: f64,
+    dst_nnz: usize,
+    src_nnz: usize,
+    dst_ind: &[i32],
+    src_ind: &[i32],
+) {
+    if dst_nnz == src_nnz && dst_ind[..dst_nnz] == src_ind[..src_nnz] {
+        add_to_scl_scl(&mut dst[..dst_nnz], &src[..dst_nnz], a, b);
+        return;
+    }
+    if a != 1.0 {
+        for x in &mut dst[..dst_nnz] {
+            *x *= a;
+        }
+    }
+    let end = n as i32 + 1;
+    let adr = |ind: &[i32], i: usize, len: usize| if i < len { ind[i] } else { end };
+    let (mut di, mut si) = (0, 0);
+    let mut dadr = adr(dst_ind, di, dst_nnz);
+    let mut sadr = adr(src_ind, si, src_nnz);
+    while di < dst_nnz {
+        if dadr == sadr {
+            dst[di] += b * src[si];
+            di += 1;
+            si += 1;
+            dadr = adr(dst_ind, di, dst_nnz);
+            sadr = adr(src_ind, si, src_nnz);
+        } else if dadr < sadr {
+            di += 1;
+            dadr = adr(dst_ind, di, dst_nnz);
+        } else {
+            si += 1;
+            sadr = adr(src_ind, si, src_nnz);
+        }
+    }
+}
+
+/// Moves rows together so that row r starts where row r-1 ends; rowadr is updated.
+pub fn compress_sparse(
+    mat: &mut [f64],
+    nr: usize,
+    rownnz: &[i32],
+    rowadr: &mut [i32],
+    colind: &mut [i32],
+) {
+    if nr == 0 {
+        return;
+    }
+    rowadr[0] = 0;
+    let mut adr = u(rownnz[0]);
+    for r in 1..nr {
+        let old = u(rowadr[r]);
+        rowadr[r] = adr as i32;
+        for a1 in old..old + u(rownnz[r]) {
+            mat[adr] = mat[a1];
+            colind[adr] = colind[a1];
+            adr += 1;
+        }
+    }
+}
+
+/// res = mat^T (mat is nr x nc); res is laid out with stride nr, then compressed.
+#[allow(clippy::too_many_arguments)]
+pub fn transpose_sparse(
+    res: &mut [f64],
+    mat: &[f64],
+    nr: usize,
+    nc: usize,
+    res_rownnz: &mut [i32],
+    res_rowadr: &mut [i32],
+    res_colind: &mut [i32],
+    rownnz: &[i32],
+    rowadr: &[i32],
+    colind: &[i32],
+) {
+    res_rownnz[..nc].fill(0);
+    for (rt, a) in res_rowadr[..nc].iter_mut().enumerate() {
+        *a = (rt * nr) as i32;
+    }
+    for r in 0..nr {
+        let adr = u(rowadr[r]);
+        for ci in 0..u(rownnz[r]) {
+            let rt = u(colind[adr + ci]);
+            let k = rt * nr + u(res_rownnz[rt]);
+            res_colind[k] = r as i32;
+            res[k] = mat[adr + ci];
+            res_rownnz[rt] += 1;
+        }
+    }
+    compress_sparse(res, nc, res_rownnz, res_rowadr, res_colind);
+}
+
+/// rowsuper[r] = number of following rows with the same pattern as row r.
+pub fn super_sparse(
+    nr: usize,
+    rowsuper: &mut [i32],
+    rownnz: &[i32],
+    rowadr: &[i32],
+    colind: &[i32],
+) {
+    if nr == 0 {
+        return;
+    }
+    for r in 0..nr - 1 {
+        rowsuper[r] = if rownnz[r] != rownnz[r + 1] {
+            0
+        } else {
+            let n = u(rownnz[r]);
+            let (a, b) = (u(rowadr[r]), u(rowadr[r + 1]));
+            (colind[a..a + n] == colind[b..b + n]) as i32
+        };
+    }
+    rowsuper[nr - 1] = 0;
+    for r in (0..nr - 1).rev() {
+        if rowsuper[r] != 0 {
+            rowsuper[r] += rowsuper[r + 1];
+        }
+    }
+}
+
+/// Sparse pattern and index inputs of `sqr_mat_td_sparse`.
+pub struct SparseRef<'a> {
+    pub rownnz: &'a [i32],
+    pub rowadr: &'a [i32],
+    pub colind: &'a [i32],
+    pub rowsuper: Option<&'a [i32]>,
+}
+
+/// res (nc x nc, uncompressed with stride nc) = mat^T * diag * mat, mat being nr x nc and
+/// matT its transpose. `chain` needs 2*nc ints and `buffer` nc values of scratch.
+#[allow(clippy::too_many_arguments)]
+pub fn sqr_mat_td_sparse(
+    res: &mut [f64],
+    mat: &[f64],
+    mat_t: &[f64],
+    diag: Option<&[f64]>,
+    nc: usize,
+    res_rownnz: &mut [i32],
+    res_rowadr: &mut [i32],
+    res_colind: &mut [i32],
+    m: &SparseRef,
+    mt: &SparseRef,
+    chain: &mut [i32],
+    buffer: &mut [f64],
+) {
+    for (r, a) in res_rowadr[..nc].iter_mut().enumerate() {
+        *a = (r * nc) as i32;
+    }
+
+    // pattern of each row of the (lower-triangular) result
+    for r in 0..nc {
+        let same_as_prev = r > 0 && mt.rowsuper.is_some_and(|s| s[r - 1] > 0);
+        if same_as_prev {
+            res_rownnz[r] = res_rownnz[r - 1];
+            let n = u(res_rownnz[r]);
+            let (src, dst) = (u(res_rowadr[r - 1]), u(res_rowadr[r]));
+            res_colind.copy_within(src..src + n, dst);
+            if mt.rownnz[r] != 0 {
+                res_colind[dst + n] = r as i32;
+                res_rownnz[r] += 1;
+            }
+            continue;
+        }
+
+        let mut nchain = 0;
+        let (mut inew, mut iold) = (0, nc);
+        let mut lastadded: i32 = -1;
+        let ri = r as i32;
+        let adr_t = u(mt.rowadr[r]);
+        for i in 0..u(mt.rownnz[r]) {
+            let c = mt.colind[adr_t + i];
+            if let Some(rs) = m.rowsuper {
+                if lastadded >= 0 && c - lastadded <= rs[u(lastadded)] {
+                    continue;
+                }
+            }
+            lastadded = c;
+
+            std::mem::swap(&mut inew, &mut iold);
+            let mut nnew = 0;
+            let mut a = 0;
+            let c = u(c);
+            let (start, end) = (u(m.rowadr[c]), u(m.rowadr[c]) + u(m.rownnz[c]));
+            for &col in &m.colind[start..end] {
+                while a < nchain && chain[iold + a] < col && chain[iold + a] <= ri {
+                    chain[inew + nnew] = chain[iold + a];
+                    nnew += 1;
+                    a += 1;
+                }
+                if col > ri {
+                    break;
+                }
+                if a < nchain && chain[iold + a] == col {
+                    a += 1;
+                }
+                chain[inew + nnew] = col;
+                nnew += 1;
+            }
+            while a < nchain && chain[iold + a] <= ri {
+                chain[inew + nnew] = chain[iold + a];
+                nnew += 1;
+                a += 1;
+            }
+            nchain = nnew;
+        }
+        res_rownnz[r] = nchain as i32;
+        let dst = u(res_rowadr[r]);
+        res_colind[dst..dst + nchain].copy_from_slice(&chain[inew..inew + nchain]);
+    }
+
+    // values of the lower triangle
+    for r in 0..nc {
+        let adr = u(res_rowadr[r]);
+        let n = u(res_rownnz[r]);
+        for &ci in &res_colind[adr..adr + n] {
+            buffer[u(ci)] = 0.0;
+        }
+        let adr_t = u(mt.rowadr[r]);
+        for i in 0..u(mt.rownnz[r]) {
+            let c = u(mt.colind[adr_t + i]);
+            let mut v = mat_t[adr_t + i];
+            if let Some(d) = diag {
+                v *= d[c];
+            }
+            let start = u(m.rowadr[c]);
+            let end = start + u(m.rownnz[c]);
+            for (&col, &x) in m.colind[start..end].iter().zip(&mat[start..end]) {
+                let col = u(col);
+                if col > r {
+                    break;
+                }
+                buffer[col] += v * x;
+            }
+        }
+        for i in 0..n {
+            res[adr + i] = buffer[u(res_colind[adr + i])];
+        }
+    }
+
+    // mirror to the upper triangle
+    for r in 1..nc {
+        let end = (nc * r + u(res_rownnz[r])).saturating_sub(1);
+        for a in nc * r..end {
+            let col = u(res_colind[a]);
+            let a1 = nc * col + u(res_rownnz[col]);
+            res_rownnz[col] += 1;
+            res[a1] = res[a];
+            res_colind[a1] = r as i32;
+        }
+    }
+}

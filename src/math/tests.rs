@@ -1,0 +1,545 @@
+//! Unit tests: algebraic properties and edge cases. Bit-exactness against MuJoCo 2.2.2 is checked
+//! at test time against the installed reference (tests/mju.rs), never against stored results.
+
+use super::blas::*;
+use super::chol::*;
+use super::misc::*;
+use super::qcqp::*;
+use super::*;
+
+fn close(a: &[f64], b: &[f64], tol: f64) -> bool {
+    a.iter().zip(b).all(|(x, y)| (x - y).abs() <= tol)
+}
+
+/// Small deterministic generator for test inputs.
+struct Rng(u64);
+impl Rng {
+    fn next(&mut self) -> f64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        (self.0 >> 11) as f64 / (1u64 << 53) as f64 * 4.0 - 2.0
+    }
+    fn vec<const N: usize>(&mut self) -> [f64; N] {
+        std::array::from_fn(|_| self.next())
+    }
+}
+
+#[test]
+fn eig3_reconstructs_matrix() {
+    let mut rng = Rng(7);
+    for _ in 0..200 {
+        let a: [f64; 6] = rng.vec();
+        let m = [a[0], a[3], a[4], a[3], a[1], a[5], a[4], a[5], a[2]];
+        let e = eig3(&m);
+        assert!(e.eigval[0] >= e.eigval[1] && e.eigval[1] >= e.eigval[2]);
+        let d = [
+            e.eigval[0],
+            0.0,
+            0.0,
+            0.0,
+            e.eigval[1],
+            0.0,
+            0.0,
+            0.0,
+            e.eigval[2],
+        ];
+        let r = mul_mat3_t(&mul_mat3(&e.eigvec, &d), &e.eigvec);
+        // Jacobi stops once a rotation's cosine exceeds 1-1e-12 (angle ~1e-6), as in 2.2.2
+        assert!(close(&r, &m, 1e-5), "{r:?} vs {m:?}");
+    }
+}
+
+#[test]
+fn chol_update_matches_refactorization() {
+    let a = [4.0, 1.0, 0.5, 1.0, 3.0, 0.2, 0.5, 0.2, 2.0];
+    let v = [0.3, -0.2, 0.7];
+    let mut l = a;
+    chol_factor(&mut l, 3, 1e-15);
+    let mut x = v;
+    assert_eq!(chol_update(&mut l, &mut x, 3, true), 3);
+    let mut a2 = a;
+    for i in 0..3 {
+        for j in 0..3 {
+            a2[3 * i + j] += v[i] * v[j];
+        }
+    }
+    let mut l2 = a2;
+    chol_factor(&mut l2, 3, 1e-15);
+    for i in 0..3 {
+        assert!(close(
+            &l[3 * i..3 * i + i + 1],
+            &l2[3 * i..3 * i + i + 1],
+            1e-14
+        ));
+    }
+}
+
+#[test]
+fn matrix_products_agree() {
+    let mut rng = Rng(3);
+    let (a, b): ([f64; 12], [f64; 12]) = (rng.vec(), rng.vec());
+    // a: 3x4, b: 3x4
+    let mut atb = [0.0; 16];
+    mul_mat_t_mat(&mut atb, &a, &b, 3, 4, 4);
+    let mut at = [0.0; 12];
+    transpose(&mut at, &a, 3, 4);
+    let mut atb2 = [0.0; 16];
+    mul_mat_mat(&mut atb2, &at, &b, 4, 3, 4);
+    assert!(close(&atb, &atb2, 1e-14));
+    let mut abt = [0.0; 9];
+    mul_mat_mat_t(&mut abt, &a, &b, 3, 4, 3);
+    let mut bt = [0.0; 12];
+    transpose(&mut bt, &b, 3, 4);
+    let mut abt2 = [0.0; 9];
+    mul_mat_mat(&mut abt2, &a, &bt, 3, 4, 3);
+    assert!(close(&abt, &abt2, 1e-14));
+    let mut ata = [0.0; 16];
+    sqr_mat_td(&mut ata, &a, None, 3, 4);
+    let mut ata2 = [0.0; 16];
+    mul_mat_t_mat(&mut ata2, &a, &a, 3, 4, 4);
+    assert!(close(&ata, &ata2, 1e-14));
+    let ones = [1.0; 3];
+    sqr_mat_td(&mut ata2, &a, Some(&ones), 3, 4);
+    assert!(close(&ata, &ata2, 1e-14));
+    let m: Mat3 = rng.vec();
+    let n: Mat3 = rng.vec();
+    assert!(close(
+        &mul_mat3t_mat(&m, &n),
+        &mul_mat3(&transpose3(&m), &n),
+        1e-14
+    ));
+}
+
+#[test]
+fn normalization_edge_cases() {
+    assert_eq!(normalize3(&[1e-16, 0.0, 0.0]), ([1.0, 0.0, 0.0], 1e-16));
+    assert_eq!(normalize4(&[0.0; 4]).0, unit_quat());
+    let mut v = [0.0, 0.0, 0.0];
+    assert_eq!(normalize(&mut v), 0.0);
+    assert_eq!(v, [1.0, 0.0, 0.0]);
+    let (u, n) = normalize3(&[3.0, 4.0, 0.0]);
+    assert_eq!(n, 5.0);
+    assert!(close(&u, &[0.6, 0.8, 0.0], 1e-15));
+}
+
+#[test]
+fn quaternion_identities() {
+    let mut rng = Rng(11);
+    for _ in 0..100 {
+        let q = normalize4(&rng.vec()).0;
+        let v: Vec3 = rng.vec();
+        // rotation by quaternion and by its matrix agree; mat2quat inverts quat2mat up to sign
+        let m = quat2mat(&q);
+        assert!(close(&rot_vec_quat(&v, &q), &mul_mat_vec3(&m, &v), 1e-14));
+        let q2 = mat2quat(&m);
+        let s = if q2[0] * q[0] + q2[1] * q[1] + q2[2] * q[2] + q2[3] * q[3] < 0.0 {
+            -1.0
+        } else {
+            1.0
+        };
+        assert!(close(&q2.map(|x| x * s), &q, 1e-14));
+        // sub_quat is the velocity taking qb to qa in unit time
+        let qb = normalize4(&rng.vec()).0;
+        let w = sub_quat(&q, &qb);
+        let qa = quat_integrate(&qb, &w, 1.0);
+        let s = if qa[0] * q[0] < 0.0 { -1.0 } else { 1.0 };
+        assert!(close(&qa.map(|x| x * s), &q, 1e-12));
+        // poses: p * p^-1 is the identity
+        let (np, nq) = neg_pose(&v, &q);
+        let (p, r) = mul_pose(&v, &q, &np, &nq);
+        assert!(close(&p, &[0.0; 3], 1e-14));
+        assert!(close(&r, &unit_quat(), 1e-14));
+        assert!(close(&trn_vec_pose(&v, &q, &np), &[0.0; 3], 1e-14));
+        // mul_quat_axis is the product with a pure quaternion
+        let a: Vec3 = rng.vec();
+        let pure = [0.0, a[0], a[1], a[2]];
+        assert!(close(&mul_quat_axis(&q, &a), &mul_quat(&q, &pure), 1e-14));
+    }
+}
+
+#[test]
+fn quat_z2vec_cases() {
+    assert_eq!(quat_z2vec(&[0.0, 0.0, 2.0]), unit_quat());
+    assert_eq!(quat_z2vec(&[0.0, 0.0, -2.0]), [0.0, 1.0, 0.0, 0.0]);
+    assert_eq!(quat_z2vec(&[0.0; 3]), unit_quat());
+    let v = [0.3, -0.4, 0.5];
+    let q = quat_z2vec(&v);
+    let z = rot_vec_quat(&[0.0, 0.0, 1.0], &q);
+    assert!(close(&z, &normalize3(&v).0, 1e-15));
+    assert_eq!(axis_angle2quat(&[1.0, 0.0, 0.0], 0.0), unit_quat());
+}
+
+#[test]
+fn euler_sequences() {
+    let q = euler2quat(&[0.0, 0.0, PI / 2.0], b"xyz").unwrap();
+    assert!(close(&q, &[0.5f64.sqrt(), 0.0, 0.0, 0.5f64.sqrt()], 1e-15));
+    // intrinsic xyz equals extrinsic ZYX
+    let a = [0.3, -0.2, 0.9];
+    let q1 = euler2quat(&a, b"xyz").unwrap();
+    let q2 = euler2quat(&[a[2], a[1], a[0]], b"ZYX").unwrap();
+    assert!(close(&q1, &q2, 1e-15));
+    assert!(euler2quat(&a, b"xqz").is_err());
+}
+
+#[test]
+fn spatial_algebra() {
+    let mut rng = Rng(5);
+    for _ in 0..50 {
+        let (v, u, f): (Vec6, Vec6, Vec6) = (rng.vec(), rng.vec(), rng.vec());
+        // <v x* f, u> = -<f, v x u>
+        let lhs = dot(&cross_force(&v, &f), &u, 6);
+        let rhs = -dot(&f, &cross_motion(&v, &u), 6);
+        assert!((lhs - rhs).abs() < 1e-12);
+        // power is invariant under a change of reference point
+        let (p0, p1): (Vec3, Vec3) = (rng.vec(), rng.vec());
+        let vm = transform_spatial(&v, false, &p1, &p0, None);
+        let fm = transform_spatial(&f, true, &p1, &p0, None);
+        assert!((dot(&vm, &fm, 6) - dot(&v, &f, 6)).abs() < 1e-12);
+        // mul_dof_vec is a weighted sum of rows
+        let w = [0.5, 0.0, -1.5];
+        let rows: Vec<f64> = v.iter().chain(&u).chain(&f).copied().collect();
+        let s = mul_dof_vec(&rows, &w, 3);
+        let e: Vec<f64> = (0..6).map(|k| 0.5 * v[k] - 1.5 * f[k]).collect();
+        assert!(close(&s, &e, 1e-14));
+        assert_eq!(mul_dof_vec(&rows, &w, 0), [0.0; 6]);
+    }
+    // inertia of a point-free body: the com-frame inertia times a velocity
+    let i = inert_com(&[1.0, 2.0, 3.0], &quat2mat(&unit_quat()), &[0.0; 3], 2.0);
+    assert_eq!(
+        mul_inert_vec(&i, &[1.0, 1.0, 1.0, 1.0, 1.0, 1.0]),
+        [1.0, 2.0, 3.0, 2.0, 2.0, 2.0]
+    );
+    let f = make_frame(&[0.0, 0.0, 2.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]).unwrap();
+    assert_eq!(f, [0.0, 0.0, 1.0, 0.0, 1.0, 0.0, -1.0, 0.0, 0.0]);
+    assert!(make_frame(&[0.1; 9]).is_none());
+}
+
+#[test]
+fn qcqp_constraint() {
+    let a = [2.0, 0.3, 0.3, 1.0];
+    let b = [-3.0, 2.0];
+    let d = [1.0, 0.5];
+    let (x, active) = qcqp2(&a, &b, &d, 0.4);
+    assert!(active);
+    let c = (x[0] / d[0]).powi(2) + (x[1] / d[1]).powi(2);
+    assert!((c - 0.16).abs() < 1e-8);
+    let mut xn = [0.0; 2];
+    assert_eq!(qcqp(&mut xn, &a, &b, &d, 0.4, 2), Some(true));
+    assert!(close(&xn, &x, 1e-8));
+    let (x, active) = qcqp2(&a, &b, &d, 100.0);
+    assert!(!active);
+    assert!(close(
+        &[2.0 * x[0] + 0.3 * x[1], 0.3 * x[0] + x[1]],
+        &[3.0, -2.0],
+        1e-12
+    ));
+    let a3 = [2.0, 0.3, 0.0, 0.3, 1.0, 0.1, 0.0, 0.1, 1.5];
+    let (x3, active) = qcqp3(&a3, &[1.0, 1.0, -1.0], &[1.0; 3], 0.1);
+    assert!(active);
+    assert!((x3.iter().map(|v| v * v).sum::<f64>() - 0.01).abs() < 1e-8);
+    assert_eq!(
+        qcqp(&mut [0.0; 6], &[0.0; 36], &[0.0; 6], &[1.0; 6], 1.0, 6),
+        None
+    );
+}
+
+#[test]
+fn scalar_helpers() {
+    assert_eq!(round(2.5), 3);
+    assert_eq!(round(-2.5), -2);
+    assert_eq!(round(0.49999999999999994), 0);
+    assert_eq!(round(f64::NAN), i32::MIN);
+    assert_eq!(round(1e10), i32::MIN);
+    assert!(min(f64::NAN, 1.0) == 1.0 && max(1.0, f64::NAN).is_nan());
+    assert_eq!(clip(5.0, -1.0, 1.0), 1.0);
+    assert_eq!(sign(-0.0), 0.0);
+    assert!(is_bad(f64::NAN) && is_bad(-2e10) && !is_bad(1e10));
+    assert!(is_zero(&[0.0, -0.0]) && !is_zero(&[0.0, 1e-300]));
+    assert_eq!(sigmoid(0.25), 0.125);
+    assert_eq!(sigmoid(0.75), 0.875);
+    assert_eq!(halton(1, 2), 0.5);
+    assert_eq!(halton(3, 2), 0.75);
+    assert!((halton(5, 3) - 7.0 / 9.0).abs() < 1e-15);
+    let mut l = [3.0, -1.0, 2.0, -1.0, 0.5];
+    insertion_sort(&mut l);
+    assert_eq!(l, [-1.0, -1.0, 0.5, 2.0, 3.0]);
+    let mut li = [3, 1, 2];
+    insertion_sort(&mut li);
+    assert_eq!(li, [1, 2, 3]);
+}
+
+#[test]
+fn names_and_texts() {
+    for t in 1..24 {
+        let n = type2str(t).unwrap();
+        assert_eq!(str2type(n.as_bytes()), t);
+    }
+    assert_eq!(type2str(0), None);
+    assert_eq!(type2str(24), None);
+    assert_eq!(str2type(b"nothing"), 0);
+    assert_eq!(
+        warning_text(1, 100),
+        "Pre-allocated contact buffer is full. Increase nconmax above 100."
+    );
+    assert_eq!(warning_text(9, 0), "Unknown warning type 9.");
+}
+
+#[test]
+fn actuator_curves() {
+    let prm = [0.75, 1.05, -1.0, 200.0, 0.5, 1.6, 1.5, 1.3, 1.2];
+    let lr = [0.2, 0.6];
+    assert!(muscle_gain(0.45, 0.3, &lr, 0.8, &prm) < 0.0);
+    assert_eq!(muscle_bias(0.1, &lr, 0.8, &prm), 0.0);
+    assert!(muscle_bias(0.7, &lr, 0.8, &prm) < 0.0);
+    assert!(muscle_dynamics(1.0, 0.2, &[0.01, 0.04]) > 0.0);
+    assert!(muscle_dynamics(0.0, 0.2, &[0.01, 0.04]) < 0.0);
+    assert!(spring_damper(0.3, -1.2, 5.0, 0.7, 0.25).is_finite());
+    // critically damped and overdamped branches start at pos0
+    assert_eq!(spring_damper(0.3, -1.2, 1.0, 2.0, 0.0), 0.3);
+    assert!((spring_damper(0.3, -1.2, 1.0, 3.0, 0.0) - 0.3).abs() < 1e-15);
+}
+
+#[test]
+fn pyramid_roundtrip() {
+    let force = [2.0, 0.3, -0.2, 0.1];
+    let mu = [0.9, 0.9, 0.5];
+    let mut p = [0.0; 6];
+    encode_pyramid(&mut p, &force, &mu, 4);
+    let mut f = [0.0; 4];
+    decode_pyramid(&mut f, &p, &mu, 4);
+    assert!(close(&f, &force, 1e-15));
+    let mut f1 = [0.0];
+    decode_pyramid(&mut f1, &[1.5], &[], 1);
+    assert_eq!(f1, [1.5]);
+}
+
+#[test]
+fn standard_normal_uses_source() {
+    let mut k = 0;
+    let seq = [3, 1, 2, 2];
+    let (a, b) = standard_normal(
+        || {
+            k += 1;
+            seq[(k - 1) % 4]
+        },
+        4,
+    );
+    // x1 = 0.5, x2 = -0.5, w = 0.5
+    let w = ((-2.0 * 0.5f64.ln()) / 0.5).sqrt();
+    assert_eq!((a, b), (0.5 * w, -0.5 * w));
+}
+
+#[test]
+fn misc_vector_ops() {
+    let a = [1.0, -2.0, 3.0];
+    assert_eq!(sum(&a), 2.0);
+    assert_eq!(l1(&a), 6.0);
+    let mut r = [0.0; 3];
+    add_scl(&mut r, &a, &a, 2.0);
+    assert_eq!(r, [3.0, -6.0, 9.0]);
+    sub_from(&mut r, &a);
+    add_to_scl(&mut r, &a, -2.0);
+    assert_eq!(r, [0.0; 3]);
+    assert_eq!(dist3(&[1.0, 2.0, 2.0], &[0.0; 3]), 3.0);
+    assert_eq!(cross(&[1.0, 0.0, 0.0], &[0.0, 1.0, 0.0]), [0.0, 0.0, 1.0]);
+    assert_eq!(v3(&[1.0, 2.0, 3.0, 4.0]), [1.0, 2.0, 3.0]);
+    let mut mtv = [9.0; 2];
+    mul_mat_t_vec(&mut mtv, &[1.0, 2.0, 3.0, 4.0], &[0.0, 1.0], 2, 2);
+    assert_eq!(mtv, [3.0, 4.0]);
+    assert_eq!(quat2vel(&unit_quat(), 0.1), [0.0; 3]);
+    assert_eq!(
+        deriv_quat(&unit_quat(), &[2.0, 0.0, 0.0]),
+        [0.0, 1.0, 0.0, 0.0]
+    );
+}
+
+#[test]
+fn sparse_products_match_dense() {
+    use super::sparse::*;
+    let (nr, nc) = (4, 5);
+    #[rustfmt::skip]
+    let a = [
+        1.0, 0.0, 2.0, 0.0, 0.0,
+        0.0, 0.0, 0.0, 0.0, 0.0,
+        0.0, 3.0, 0.0, -1.0, 0.5,
+        0.0, 3.0, 0.0, 2.0, 1.5,
+    ];
+    let (mut s, mut nnz, mut adr, mut col) = ([0.0; 20], [0; 4], [0; 4], [0; 20]);
+    dense2sparse(&mut s, &a, nr, nc, &mut nnz, &mut adr, &mut col);
+    assert_eq!(nnz, [2, 0, 3, 3]);
+    let mut back = [9.0; 20];
+    sparse2dense(&mut back, &s, nr, nc, &nnz, &adr, &col);
+    assert_eq!(back, a);
+
+    let v = [1.0, -1.0, 0.5, 2.0, -3.0];
+    let (mut y, mut yd) = ([0.0; 4], [0.0; 4]);
+    mul_mat_vec_sparse(&mut y, &s, &v, nr, &nnz, &adr, &col);
+    mul_mat_vec(&mut yd, &a, &v, nr, nc);
+    assert!(close(&y, &yd, 1e-15));
+
+    let (mut t, mut tn, mut ta, mut tc) = ([0.0; 20], [0; 5], [0; 5], [0; 20]);
+    transpose_sparse(
+        &mut t, &s, nr, nc, &mut tn, &mut ta, &mut tc, &nnz, &adr, &col,
+    );
+    let mut td = [0.0; 20];
+    sparse2dense(&mut td, &t, nc, nr, &tn, &ta, &tc);
+    let mut at = [0.0; 20];
+    transpose(&mut at, &a, nr, nc);
+    assert_eq!(td, at);
+
+    let mut sup = [0; 4];
+    super_sparse(nr, &mut sup, &nnz, &adr, &col);
+    assert_eq!(sup, [0, 0, 1, 0]);
+    let mut sup_t = [0; 5];
+    super_sparse(nc, &mut sup_t, &tn, &ta, &tc);
+
+    // A' * diag * A, with and without supernodes
+    let diag = [1.0, 2.0, 0.5, 3.0];
+    let mut dense = [0.0; 25];
+    sqr_mat_td(&mut dense, &a, Some(&diag), nr, nc);
+    for use_super in [false, true] {
+        let m = SparseRef {
+            rownnz: &nnz,
+            rowadr: &adr,
+            colind: &col,
+            rowsuper: use_super.then_some(&sup[..]),
+        };
+        let mt = SparseRef {
+            rownnz: &tn,
+            rowadr: &ta,
+            colind: &tc,
+            rowsuper: use_super.then_some(&sup_t[..]),
+        };
+        let (mut h, mut hn, mut ha, mut hc) = ([0.0; 25], [0; 5], [0; 5], [0; 25]);
+        let (mut chain, mut buffer) = ([0; 10], [0.0; 5]);
+        sqr_mat_td_sparse(
+            &mut h,
+            &s,
+            &t,
+            Some(&diag),
+            nc,
+            &mut hn,
+            &mut ha,
+            &mut hc,
+            &m,
+            &mt,
+            &mut chain,
+            &mut buffer,
+        );
+        let mut hd = [0.0; 25];
+        sparse2dense(&mut hd, &h, nc, nc, &hn, &ha, &hc);
+        assert!(close(&hd, &dense, 1e-14), "{hd:?}");
+    }
+
+    // combining sparse rows
+    let (mut dst, mut di) = ([1.0, 2.0, 0.0, 0.0], [0, 2, 0, 0]);
+    let (mut buf, mut bi) = ([0.0; 5], [0; 5]);
+    let n = combine_sparse(
+        &mut dst,
+        &[4.0, 5.0],
+        5,
+        2.0,
+        -1.0,
+        2,
+        2,
+        &mut di,
+        &[2, 4],
+        &mut buf,
+        &mut bi,
+    );
+    assert_eq!(
+        (n, &dst[..3], &di[..3]),
+        (3, &[2.0, 0.0, -5.0][..], &[0, 2, 4][..])
+    );
+    assert_eq!(dot_sparse2(&dst, &[1.0, 1.0], 3, &di, 2, &[0, 4]), -3.0);
+}
+
+#[test]
+fn sparse_cholesky_and_lu_solve() {
+    use super::chol_sparse::*;
+    // symmetric positive definite with a tree pattern (parents 0 <- 1, 0 <- 3; 2 alone),
+    // uncompressed (stride n) layout
+    let n = 4;
+    #[rustfmt::skip]
+    let dense = [
+        4.0, 1.0, 0.0, 0.5,
+        1.0, 3.0, 0.0, 0.0,
+        0.0, 0.0, 2.0, 0.0,
+        0.5, 0.0, 0.0, 5.0,
+    ];
+    let mut mat = [0.0; 16];
+    let mut colind = [0; 16];
+    let mut rownnz = [0; 4];
+    let rowadr = [0, 4, 8, 12];
+    for r in 0..n {
+        for c in 0..n {
+            if dense[r * n + c] != 0.0 {
+                let k = rowadr[r] as usize + rownnz[r] as usize;
+                mat[k] = dense[r * n + c];
+                colind[k] = c as i32;
+                rownnz[r] += 1;
+            }
+        }
+    }
+    let (lu_mat, lu_nnz, lu_col) = (mat, rownnz, colind);
+    let (mut buf, mut bi) = ([0.0; 4], [0; 4]);
+    let rank = chol_factor_sparse(
+        &mut mat,
+        n,
+        1e-15,
+        &mut rownnz,
+        &rowadr,
+        &mut colind,
+        &mut buf,
+        &mut bi,
+    );
+    assert_eq!(rank, Ok(4));
+    let b = [1.0, -2.0, 0.5, 3.0];
+    let mut x = [0.0; 4];
+    chol_solve_sparse(&mut x, &mat, &b, n, &rownnz, &rowadr, &colind);
+    let mut ax = [0.0; 4];
+    mul_mat_vec(&mut ax, &dense, &x, n, n);
+    assert!(close(&ax, &b, 1e-14));
+
+    // update: factor of A + v v' with v inside the pattern
+    let (mut v, mut vi) = ([0.5, 0.2], [0, 3]);
+    let mut up = mat;
+    let r = chol_update_sparse(
+        &mut up, &mut v, n, true, &rownnz, &rowadr, &colind, 2, &mut vi, &mut buf, &mut bi,
+    );
+    assert_eq!(r, Ok(4));
+    let mut dense2 = dense;
+    dense2[0] += 0.25;
+    dense2[3] += 0.1;
+    dense2[12] += 0.1;
+    dense2[15] += 0.04;
+    chol_solve_sparse(&mut x, &up, &b, n, &rownnz, &rowadr, &colind);
+    mul_mat_vec(&mut ax, &dense2, &x, n, n);
+    assert!(close(&ax, &b, 1e-14));
+
+    // LU on the same pattern, compressed layout
+    let mut lu = [0.0; 16];
+    let mut col = [0; 16];
+    let mut adr = [0; 4];
+    let mut k = 0;
+    for r in 0..n {
+        adr[r] = k as i32;
+        for i in 0..lu_nnz[r] as usize {
+            lu[k] = lu_mat[4 * r + i];
+            col[k] = lu_col[4 * r + i];
+            k += 1;
+        }
+    }
+    let mut scratch = [0; 4];
+    assert_eq!(
+        factor_lu_sparse(&mut lu, n, &mut scratch, &lu_nnz, &adr, &col),
+        Ok(())
+    );
+    assert_eq!(
+        solve_lu_sparse(&mut x, &lu, &b, n, &lu_nnz, &adr, &col),
+        Ok(())
+    );
+    mul_mat_vec(&mut ax, &dense, &x, n, n);
+    assert!(close(&ax, &b, 1e-14));
+}

@@ -1,0 +1,186 @@
+//! Shared helpers of the integration tests: paths, the reference library, compiling and
+//! running the C programs, report files.
+
+#![allow(dead_code)]
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output, Stdio};
+
+pub const REF_INCLUDE: &str = "/usr/include/mujoco/mujoco.h";
+pub const REF_LIB: &str = "/usr/lib/x86_64-linux-gnu/libmujoco.so.2.2.2";
+pub const EIGEN: &str = "/usr/include/eigen3/Eigen/Dense";
+
+pub fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+pub fn target_dir() -> PathBuf {
+    std::env::var_os("CARGO_TARGET_DIR")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| root().join("target"))
+}
+
+/// Directory of our built library (target/release).
+pub fn lib_dir() -> PathBuf {
+    target_dir().join("release")
+}
+
+/// Our shared library; fails the test when it has not been built.
+pub fn our_lib() -> PathBuf {
+    let lib = lib_dir().join("libmujoco.so");
+    assert!(
+        lib.exists(),
+        "{} is missing: run `cargo build --release` first",
+        lib.display()
+    );
+    lib
+}
+
+/// Fails the test with a clear message when Debian's MuJoCo 2.2.2 is not installed.
+pub fn require_reference() {
+    for (path, what) in [(REF_INCLUDE, "headers"), (REF_LIB, "library")] {
+        assert!(
+            Path::new(path).exists(),
+            "reference MuJoCo 2.2.2 {what} missing ({path}): install Debian's libmujoco-dev \
+             (capi-tests/run-all does it)"
+        );
+    }
+}
+
+pub fn require_eigen() {
+    assert!(
+        Path::new(EIGEN).exists(),
+        "Eigen missing ({EIGEN}): install libeigen3-dev"
+    );
+}
+
+/// The harness binaries (capi-tests/build: harness-ref and harness-ours); returns their directory.
+pub fn harness_bin() -> PathBuf {
+    require_reference();
+    require_eigen();
+    our_lib();
+    let o = Command::new(root().join("capi-tests/build"))
+        .output()
+        .expect("bash missing");
+    assert!(
+        o.status.success(),
+        "building the harness failed:\n{}{}",
+        text(&o.stdout),
+        text(&o.stderr)
+    );
+    PathBuf::from(text(&o.stdout).trim())
+}
+
+/// A scratch directory under target/capi-tests.
+pub fn work_dir(name: &str) -> PathBuf {
+    let d = target_dir().join("capi-tests").join(name);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+pub enum Lib {
+    Ref,
+    Ours,
+}
+
+impl Lib {
+    pub fn name(self) -> &'static str {
+        match self {
+            Lib::Ref => "ref",
+            Lib::Ours => "ours",
+        }
+    }
+}
+
+/// Compiles C sources against one library's headers and links it; returns the executable.
+/// DT_RPATH (not RUNPATH) pins the library: cargo's LD_LIBRARY_PATH cannot swap it.
+pub fn compile_c(srcs: &[PathBuf], name: &str, lib: Lib) -> PathBuf {
+    let out = work_dir("bin").join(format!("{name}-{}", lib.name()));
+    let mut cmd = Command::new("gcc");
+    cmd.args([
+        "-std=c11",
+        "-O2",
+        "-Wall",
+        "-Werror=implicit-function-declaration",
+        "-o",
+    ])
+    .arg(&out);
+    cmd.args(srcs);
+    match lib {
+        Lib::Ref => {
+            require_reference();
+            cmd.arg(REF_LIB)
+                .arg("-Wl,--disable-new-dtags,-rpath,/usr/lib/x86_64-linux-gnu");
+        }
+        Lib::Ours => {
+            our_lib();
+            let dir = lib_dir();
+            cmd.arg("-I").arg(root().join("include"));
+            cmd.arg(format!("-L{}", dir.display())).arg("-lmujoco");
+            cmd.arg(format!("-Wl,--disable-new-dtags,-rpath,{}", dir.display()));
+        }
+    }
+    cmd.arg("-lm");
+    let o = cmd
+        .output()
+        .expect("gcc not found: install build-essential");
+    assert!(
+        o.status.success(),
+        "compiling {name} against {} failed:\n{}",
+        lib.name(),
+        String::from_utf8_lossy(&o.stderr)
+    );
+    out
+}
+
+/// Runs a command with stdin closed and a time limit (coreutils `timeout`), without the
+/// LD_LIBRARY_PATH cargo sets for tests (it would point libmujoco.so.2.2.2 at ours).
+pub fn run(prog: &Path, args: &[&str], envs: &[(&str, &str)], seconds: u32) -> Output {
+    let mut cmd = Command::new("timeout");
+    // a scratch working directory: mju_error writes MUJOCO_LOG.TXT there
+    cmd.arg(seconds.to_string())
+        .arg(prog)
+        .args(args)
+        .current_dir(work_dir("run"));
+    cmd.stdin(Stdio::null()).env_remove("LD_LIBRARY_PATH");
+    for (k, v) in envs {
+        cmd.env(k, v);
+    }
+    cmd.output()
+        .unwrap_or_else(|e| panic!("cannot run {}: {e}", prog.display()))
+}
+
+pub fn text(b: &[u8]) -> String {
+    String::from_utf8_lossy(b).into_owned()
+}
+
+/// Writes a report that capi-tests/run-all prints after the tests (target/capi-tests/reports).
+pub fn report(name: &str, body: &str) {
+    let dir = work_dir("reports");
+    std::fs::write(dir.join(format!("{name}.txt")), body).unwrap();
+}
+
+/// The models of the differential checks (capi-tests/models.list), as absolute paths.
+pub fn models() -> Vec<String> {
+    model_list("models.list")
+}
+
+/// The models of a list file of capi-tests/, as absolute paths.
+pub fn model_list(file: &str) -> Vec<String> {
+    let list = std::fs::read_to_string(root().join("capi-tests").join(file)).unwrap();
+    list.lines()
+        .map(str::trim)
+        .filter(|l| !l.is_empty() && !l.starts_with('#'))
+        .map(|l| root().join(l).to_string_lossy().into_owned())
+        .collect()
+}
+
+/// A model of models/ as an absolute path.
+pub fn model(name: &str) -> String {
+    root()
+        .join("models")
+        .join(name)
+        .to_string_lossy()
+        .into_owned()
+}

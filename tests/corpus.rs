@@ -1,0 +1,114 @@
+//! Optional: compiled-model comparison over a corpus of real models (MuJoCo's and dm_control's),
+//! run only when the corpus is present ($RUJOCO_CORPUS, ../shared/corpus or /work/shared/corpus).
+//! Report-only by default (target/capi-tests/reports/corpus.txt); RUJOCO_CORPUS_STRICT=1 makes
+//! any difference a failure.
+
+mod common;
+use common::*;
+use std::path::{Path, PathBuf};
+
+fn corpus_dir() -> Option<PathBuf> {
+    let candidates = [
+        std::env::var_os("RUJOCO_CORPUS").map(PathBuf::from),
+        Some(root().join("../shared/corpus")),
+        Some(PathBuf::from("/work/shared/corpus")),
+    ];
+    candidates
+        .into_iter()
+        .flatten()
+        .find(|p| p.is_dir())
+        .and_then(|p| p.canonicalize().ok())
+}
+
+fn xml_files(dir: &Path, out: &mut Vec<PathBuf>) {
+    let mut entries: Vec<_> = std::fs::read_dir(dir)
+        .into_iter()
+        .flatten()
+        .flatten()
+        .map(|e| e.path())
+        .collect();
+    entries.sort();
+    for p in entries {
+        if p.is_dir() {
+            xml_files(&p, out);
+        } else if p.extension().is_some_and(|e| e == "xml") {
+            out.push(p);
+        }
+    }
+}
+
+#[test]
+fn corpus_compiled_models() {
+    let Some(corpus) = corpus_dir() else {
+        eprintln!("corpus_compiled_models: skipped, no corpus");
+        return;
+    };
+    let bin = harness_bin();
+    let mut files = Vec::new();
+    xml_files(&corpus, &mut files);
+    let base = work_dir("corpus");
+    let (mut same, mut differ, mut rejected) = (Vec::new(), Vec::new(), 0);
+    for (i, f) in files.iter().enumerate() {
+        let dir = base.join(i.to_string());
+        let _ = std::fs::remove_dir_all(&dir);
+        let (fs, ds) = (
+            f.to_string_lossy().to_string(),
+            dir.to_string_lossy().to_string(),
+        );
+        let r = run(
+            &bin.join("harness-ref"),
+            &["record", &fs, &ds, "--model-only"],
+            &[],
+            120,
+        );
+        if !r.status.success() {
+            rejected += 1; // include files and deliberately malformed models
+            continue;
+        }
+        run(
+            &bin.join("harness-ours"),
+            &["replay", &fs, &ds, "--model-only"],
+            &[],
+            120,
+        );
+        let c = run(
+            &bin.join("harness-ref"),
+            &["compare", &ds, "--groups", "model"],
+            &[],
+            120,
+        );
+        let rel = f.strip_prefix(&corpus).unwrap_or(f).display().to_string();
+        if c.status.success() {
+            same.push(rel);
+        } else {
+            let why = text(&c.stdout)
+                .lines()
+                .next()
+                .unwrap_or("")
+                .trim()
+                .to_string();
+            differ.push(format!("{rel}: {why}"));
+        }
+    }
+    let msg = format!(
+        "corpus ({}): {} of {} models compile identically to 2.2.2 ({} files the reference rejects skipped)\n{}",
+        corpus.display(),
+        same.len(),
+        same.len() + differ.len(),
+        rejected,
+        differ.iter().map(|d| format!("  differs: {d}\n")).collect::<String>()
+    );
+    report("corpus", &msg);
+    // A model we cannot compile yet must be rejected with an error, never loaded with other values.
+    let wrong: Vec<&String> = differ
+        .iter()
+        .filter(|d| !d.contains("mj_loadXML failed"))
+        .collect();
+    assert!(
+        wrong.is_empty(),
+        "models loaded with values other than 2.2.2's: {wrong:?}\n{msg}"
+    );
+    if std::env::var("RUJOCO_CORPUS_STRICT").is_ok_and(|v| v == "1") {
+        assert!(differ.is_empty(), "{msg}");
+    }
+}

@@ -1,0 +1,147 @@
+//! Differential checks against Debian's MuJoCo 2.2.2 (capi-tests/harness): every model of
+//! capi-tests/models.list is run once through both libraries; each test compares one family
+//! of results over all models and fails listing the quantities beyond tolerance.
+
+mod common;
+use common::*;
+use std::path::PathBuf;
+use std::sync::OnceLock;
+
+fn stem(model: &str) -> String {
+    PathBuf::from(model)
+        .file_stem()
+        .unwrap()
+        .to_string_lossy()
+        .into_owned()
+}
+
+/// Records the reference and replays ours for every listed model, once per test process.
+fn results() -> &'static (PathBuf, PathBuf) {
+    static RESULTS: OnceLock<(PathBuf, PathBuf)> = OnceLock::new();
+    RESULTS.get_or_init(|| {
+        let bin = harness_bin();
+        let base = work_dir("diff");
+        for model in models() {
+            let dir = base.join(stem(&model));
+            let _ = std::fs::remove_dir_all(&dir);
+            let d = dir.to_string_lossy().to_string();
+            let r = run(&bin.join("harness-ref"), &["record", &model, &d], &[], 300);
+            assert!(
+                r.status.success(),
+                "reference run failed on {model}:\n{}{}",
+                text(&r.stdout),
+                text(&r.stderr)
+            );
+            run(&bin.join("harness-ours"), &["replay", &model, &d], &[], 300);
+            let full = run(&bin.join("harness-ref"), &["compare", &d, "-v"], &[], 120);
+            std::fs::write(dir.join("report.txt"), &full.stdout).unwrap();
+        }
+        let summary: String = models()
+            .iter()
+            .map(|m| {
+                let t = std::fs::read_to_string(base.join(stem(m)).join("report.txt"))
+                    .unwrap_or_default();
+                let last = t.lines().last().unwrap_or("no report").trim().to_string();
+                format!("  {m}: {last}\n")
+            })
+            .collect();
+        report(
+            "differential",
+            &format!("differential (details: target/capi-tests/diff/*/report.txt):\n{summary}"),
+        );
+        (bin, base)
+    })
+}
+
+/// Compares the given check groups for every model; fails with the comparator's findings.
+fn check(groups: &str) {
+    let (bin, base) = results();
+    let mut failures = String::new();
+    let mut all = String::new();
+    for model in models() {
+        let d = base.join(stem(&model)).to_string_lossy().to_string();
+        let o = run(
+            &bin.join("harness-ref"),
+            &["compare", &d, "--groups", groups],
+            &[],
+            120,
+        );
+        let out = format!("model {model}\n{}", text(&o.stdout));
+        if !o.status.success() {
+            failures.push_str(&out);
+        }
+        all.push_str(&out);
+    }
+    report(&format!("differential-{}", groups.replace(',', "-")), &all);
+    assert!(
+        failures.is_empty(),
+        "differences from MuJoCo 2.2.2 (relative error |a-b|/max(1,|a|,|b|)):\n{failures}"
+    );
+}
+
+#[test]
+fn compiled_model_fields() {
+    check("model");
+}
+
+#[test]
+fn forward_at_trajectory_states() {
+    check("forward");
+}
+
+#[test]
+fn jacobians() {
+    check("jacSite,jacBody,jacBodyCom,jacGeom,jac,jacPointAxis");
+}
+
+#[test]
+fn mass_matrix_functions() {
+    check("fullM,mulM,mulM2,solveM,consistency");
+}
+
+#[test]
+fn position_integration_and_differentiation() {
+    check("integratePos,differentiatePos");
+}
+
+#[test]
+fn names() {
+    check("names");
+}
+
+#[test]
+fn one_step_from_each_state() {
+    check("step");
+}
+
+#[test]
+fn stepped_trajectories() {
+    check("traj");
+}
+
+/// The harness compares the reference with itself without a difference: validates recording,
+/// the transplanted model and the comparator (independent of our library's progress).
+/// Every group must show exactly zero error, except the Eigen self-consistency residuals.
+#[test]
+fn harness_self_check() {
+    let bin = harness_bin();
+    let dir = work_dir("diff-self");
+    let _ = std::fs::remove_dir_all(&dir);
+    let d = dir.to_string_lossy().to_string();
+    for model in models() {
+        let r = run(&bin.join("harness-ref"), &["record", &model, &d], &[], 300);
+        assert!(r.status.success(), "reference run failed on {model}");
+        run(&bin.join("harness-ref"), &["replay", &model, &d], &[], 300);
+        let c = run(&bin.join("harness-ref"), &["compare", &d], &[], 120);
+        let out = text(&c.stdout);
+        assert!(
+            c.status.success(),
+            "reference differs from itself on {model}:\n{out}"
+        );
+        for line in out.lines().filter(|l| l.contains(" quantities, ")) {
+            let exact =
+                line.contains("worst 0.00e+00") || line.trim_start().starts_with("consistency");
+            assert!(exact, "reference differs from itself on {model}:\n{line}");
+        }
+    }
+}

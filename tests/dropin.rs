@@ -1,0 +1,109 @@
+//! Drop-in proof: Debian's prebuilt /usr/bin/mujoco-testspeed, unmodified, runs on our library
+//! through LD_LIBRARY_PATH; steps per second of both libraries are reported.
+
+mod common;
+use common::*;
+use std::path::Path;
+use std::process::Command;
+
+const TESTSPEED: &str = "/usr/bin/mujoco-testspeed";
+const STEPS: &str = "100000";
+
+fn steps_per_second(out: &str) -> Option<f64> {
+    out.lines()
+        .find(|l| l.contains("Steps per second"))?
+        .split(':')
+        .nth(1)?
+        .trim()
+        .parse()
+        .ok()
+}
+
+#[test]
+fn testspeed_runs_on_ours() {
+    require_reference();
+    assert!(
+        Path::new(TESTSPEED).exists(),
+        "{TESTSPEED} missing: install libmujoco-samples"
+    );
+    our_lib();
+    let lib_dir = lib_dir().canonicalize().unwrap();
+    let ld = lib_dir.to_string_lossy().to_string();
+
+    // the dynamic loader picks ours under LD_LIBRARY_PATH
+    let ldd = Command::new("ldd")
+        .arg(TESTSPEED)
+        .env("LD_LIBRARY_PATH", &ld)
+        .output()
+        .expect("ldd missing");
+    let line = text(&ldd.stdout)
+        .lines()
+        .find(|l| l.contains("libmujoco.so"))
+        .unwrap_or("")
+        .trim()
+        .to_string();
+    let resolved = line
+        .split("=>")
+        .nth(1)
+        .and_then(|r| r.split_whitespace().next())
+        .unwrap_or("");
+    let resolved_dir = Path::new(resolved)
+        .parent()
+        .and_then(|p| p.canonicalize().ok());
+    assert_eq!(
+        resolved_dir.as_deref(),
+        Some(lib_dir.as_path()),
+        "ldd under LD_LIBRARY_PATH does not pick ours: {line}"
+    );
+
+    // best of three alternating runs: the machine's cores are shared
+    let arm3 = model("arm3.xml");
+    let (mut ref_sps, mut our_sps) = (None::<f64>, None::<f64>);
+    let (mut reference, mut ours) = (None, None);
+    for _ in 0..3 {
+        let r = run(TESTSPEED.as_ref(), &[&arm3, STEPS], &[], 120);
+        let o = run(
+            TESTSPEED.as_ref(),
+            &[&arm3, STEPS],
+            &[("LD_LIBRARY_PATH", &ld)],
+            120,
+        );
+        let best = |a: Option<f64>, b: Option<f64>| match (a, b) {
+            (Some(x), Some(y)) => Some(x.max(y)),
+            (x, y) => x.or(y),
+        };
+        ref_sps = best(ref_sps, steps_per_second(&text(&r.stdout)));
+        our_sps = best(our_sps, steps_per_second(&text(&o.stdout)));
+        let failed = !o.status.success();
+        reference = Some(r);
+        ours = Some(o);
+        if failed {
+            break;
+        }
+    }
+    let (reference, ours) = (reference.unwrap(), ours.unwrap());
+    let fmt = |s: Option<f64>| s.map_or("-".to_string(), |v| format!("{v:.0}"));
+    let msg = format!(
+        "drop-in: mujoco-testspeed models/arm3.xml {STEPS}: ldd -> {resolved}\n  steps per second (best of 3): reference {}, ours {}{}\n",
+        fmt(ref_sps),
+        fmt(our_sps),
+        match (ref_sps, our_sps) {
+            (Some(r), Some(o)) => format!(" (ours/reference = {:.2})", o / r),
+            _ => String::new(),
+        }
+    );
+    eprint!("{msg}");
+    report("dropin", &msg);
+    assert!(
+        ref_sps.is_some(),
+        "reference testspeed failed:\n{}",
+        text(&reference.stdout)
+    );
+    assert!(
+        ours.status.success() && our_sps.is_some(),
+        "testspeed on ours failed (exit {:?}):\n{}{}",
+        ours.status.code(),
+        text(&ours.stdout),
+        text(&ours.stderr)
+    );
+}
