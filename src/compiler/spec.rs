@@ -688,6 +688,10 @@ pub struct CompilerOpts {
     pub discardvisual: bool,
     pub inertiafromgeom: InertiaFromGeom,
     pub inertiagrouprange: [i32; 2],
+    /// `<lengthrange>`: mode (none, muscle, muscleuser, all), useexisting, uselimit
+    pub lr_mode: i32,
+    pub lr_useexisting: bool,
+    pub lr_uselimit: bool,
 }
 
 impl Default for CompilerOpts {
@@ -704,6 +708,9 @@ impl Default for CompilerOpts {
             discardvisual: false,
             inertiafromgeom: InertiaFromGeom::Auto,
             inertiagrouprange: [0, 5],
+            lr_mode: 1,
+            lr_useexisting: true,
+            lr_uselimit: false,
         }
     }
 }

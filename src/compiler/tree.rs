@@ -847,10 +847,31 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
                 "actrange specified but dyntype is 'none' in actuator '{name}' (id = {id})"
             )));
         }
-        if a.gaintype == 2 || a.biastype == 2 || a.dyntype == 3 {
-            return Err(aerr(
-                "muscle actuators are not supported by this compiler yet".into(),
-            ));
+        for (i, prm) in [(2, a.gainprm), (2, a.biasprm)].iter().enumerate() {
+            let muscle = if i == 0 {
+                a.gaintype == prm.0
+            } else {
+                a.biastype == prm.0
+            };
+            if !muscle {
+                continue;
+            }
+            let p = prm.1;
+            if p[0] >= p[1] {
+                return Err(aerr(format!(
+                    "range[0]<range[1] required in muscle '{name}' (id = {id})"
+                )));
+            }
+            if p[4] >= 1.0 || p[5] <= 1.0 {
+                return Err(aerr(format!(
+                    "lmin<1<lmax required in muscle '{name}' (id = {id})"
+                )));
+            }
+            if p[3] <= 0.0 || p[6] <= 0.0 || p[7] <= 0.0 || p[8] <= 0.0 {
+                return Err(aerr(format!(
+                    "positive scale, vmax, fpmax, fvmax required in muscle '{name}' (id = {id})"
+                )));
+            }
         }
         if a.target.is_empty() {
             return Err(aerr(format!(
@@ -929,6 +950,34 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
             }
         };
         trnid.push(ids);
+    }
+
+    // actuator length ranges: existing, or joint/tendon limits; simulation is not available
+    for (i, a) in actuators.iter_mut().enumerate() {
+        let muscle = a.gaintype == 2 || a.biastype == 2;
+        let user = a.gaintype == 3 || a.biastype == 3;
+        let mode = opts.lr_mode;
+        if mode == 0 || (mode == 1 && !muscle) || (mode == 2 && !muscle && !user) {
+            continue;
+        }
+        if opts.lr_useexisting && a.lengthrange[0] < a.lengthrange[1] {
+            continue;
+        }
+        let t = trnid[i][0] as usize;
+        if opts.lr_uselimit {
+            if matches!(a.trntype, 0 | 1) && joints[t].spec.limited != 0 {
+                a.lengthrange = joints[t].spec.range;
+                continue;
+            }
+            if a.trntype == 3 && tendons[t].spec.limited != 0 {
+                a.lengthrange = tendons[t].spec.range;
+                continue;
+            }
+        }
+        return Err(CError::msg(&format!(
+            "actuator {i} needs a lengthrange computed by simulation, which this compiler does not do yet; \
+             give lengthrange explicitly"
+        )));
     }
 
     // sensors

@@ -344,7 +344,7 @@ fn one_light(el: &Element, l: &mut Light) -> R<()> {
     Ok(())
 }
 
-const ACTUATORS: [&str; 8] = [
+const ACTUATORS: [&str; 9] = [
     "general",
     "motor",
     "position",
@@ -353,6 +353,7 @@ const ACTUATORS: [&str; 8] = [
     "damper",
     "cylinder",
     "adhesion",
+    "muscle",
 ];
 
 fn one_actuator(el: &Element, a: &mut Actuator) -> R<()> {
@@ -469,6 +470,42 @@ fn one_actuator(el: &Element, a: &mut Actuator) -> R<()> {
             }
             a.ctrllimited = 1;
             (a.dyntype, a.gaintype, a.biastype) = (0, if slot == 2 { 1 } else { 0 }, 0);
+        }
+        "muscle" => {
+            // 2.2.2's muscle defaults replace values still at the generic defaults
+            if a.dynprm[0] == 1.0 {
+                a.dynprm[0] = 0.01;
+            }
+            if a.dynprm[1] == 0.0 {
+                a.dynprm[1] = 0.04;
+            }
+            let muscle = [
+                (1.0, 0.75),
+                (0.0, 1.05),
+                (0.0, -1.0),
+                (0.0, 200.0),
+                (0.0, 0.5),
+                (0.0, 1.6),
+                (0.0, 1.5),
+                (0.0, 1.3),
+                (0.0, 1.2),
+            ];
+            for (k, (generic, value)) in muscle.iter().enumerate() {
+                if a.gainprm[k] == *generic {
+                    a.gainprm[k] = *value;
+                }
+            }
+            nums(el, "timeconst", &mut a.dynprm[..2])?;
+            nums(el, "range", &mut a.gainprm[..2])?;
+            for (k, n) in ["force", "scale", "lmin", "lmax", "vmax", "fpmax", "fvmax"]
+                .iter()
+                .enumerate()
+            {
+                num(el, n, &mut a.gainprm[k + 2])?;
+            }
+            let g = a.gainprm;
+            a.biasprm[..9].copy_from_slice(&g[..9]);
+            (a.dyntype, a.gaintype, a.biastype) = (3, 2, 2);
         }
         "cylinder" => {
             num(el, "timeconst", &mut a.dynprm[0])?;
@@ -1102,7 +1139,27 @@ fn read_compiler(spec: &mut ModelSpec, el: &Element) -> R<()> {
         c.inertiagrouprange = range.map(|x| x as i32);
     }
     if let Some(lr) = el.children.iter().find(|x| x.name == "lengthrange") {
-        return Err(unsupported(lr, "lengthrange"));
+        if let Some(i) = keyword(lr, "mode", &["none", "muscle", "muscleuser", "all"])? {
+            c.lr_mode = i as i32;
+        }
+        if let Some(b) = boolean(lr, "useexisting")? {
+            c.lr_useexisting = b;
+        }
+        if let Some(b) = boolean(lr, "uselimit")? {
+            c.lr_uselimit = b;
+        }
+        let mut x = 0.0;
+        for n in [
+            "accel",
+            "maxforce",
+            "timeconst",
+            "timestep",
+            "inttotal",
+            "inteval",
+            "tolrange",
+        ] {
+            num(lr, n, &mut x)?;
+        }
     }
     Ok(())
 }
