@@ -75,6 +75,32 @@ unsafe extern "C" fn keep_warning(msg: *const c_char) {
     COMPILE_WARNING.with(|w| *w.borrow_mut() = text);
 }
 
+thread_local! {
+    /// Errors raised by the engine during the test step (ignored, see `test_step`).
+    static STEP_ERROR: std::cell::RefCell<String> = const { std::cell::RefCell::new(String::new()) };
+}
+
+unsafe extern "C" fn keep_error(msg: *const c_char) {
+    let text = crate::capi::errmem::cstr(msg).into_owned();
+    STEP_ERROR.with(|w| *w.borrow_mut() = text);
+}
+
+/// One step from the reset state, as 2.2.2's compiler takes: its warnings (unstable
+/// simulation, singular inertia) reach the error buffer. Engine errors are not fatal here, so a
+/// feature the engine lacks does not stop a model from loading.
+unsafe fn test_step(m: *mut mjModel) {
+    let saved = errmem::_mjPRIVATE__get_tls_error_fn();
+    errmem::_mjPRIVATE__set_tls_error_fn(Some(keep_error));
+    let d = crate::capi::io::mj_makeData(m);
+    if !d.is_null() {
+        crate::capi::io::mj_resetData(m, d);
+        crate::capi::engine::mj_step(m, d);
+        crate::capi::io::mj_deleteData(d);
+    }
+    errmem::_mjPRIVATE__set_tls_error_fn(saved);
+    STEP_ERROR.with(|w| w.borrow_mut().clear());
+}
+
 /// Parses, compiles and allocates; returns the model or the error text.
 unsafe fn load(filename: *const c_char, vfs: *const mjVFS) -> Result<*mut mjModel, String> {
     if filename.is_null() {
@@ -97,6 +123,14 @@ unsafe fn load(filename: *const c_char, vfs: *const mjVFS) -> Result<*mut mjMode
         let mut mm = ModelMut::new(&mut *m);
         compiler::fill(&compiled, &mut mm);
     }
+    // 2.2.2 allocates the model's mjData before mj_setConst and fails the load if it cannot
+    match crate::abi::alloc::alloc_data(&*m) {
+        Ok(d) => crate::abi::alloc::delete_data(d),
+        Err(_) => {
+            crate::abi::alloc::delete_model(m);
+            return Err("Error: could not create mjData".into());
+        }
+    }
     if let Err(e) = compiler::set_const(&mut *m) {
         crate::abi::alloc::delete_model(m);
         return Err(format!("Error: engine error: {e}"));
@@ -107,6 +141,13 @@ unsafe fn load(filename: *const c_char, vfs: *const mjVFS) -> Result<*mut mjMode
         compiler::auto_spring_damper(&compiled, &mut mm);
     }
     compiler::finish(&compiled, &mut (*m).stat);
+    // SAFETY: m came from make_model.
+    if let Some(msg) = crate::abi::validate::validate_references(crate::abi::view::Model::new(&*m))
+    {
+        crate::abi::alloc::delete_model(m);
+        return Err(format!("Error: {msg}"));
+    }
+    test_step(m);
     Ok(m)
 }
 

@@ -1169,7 +1169,11 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
     h.nlight = lights.len() as i32;
     h.nkey = keys.len() as i32;
     h.nsensor = csensors.len() as i32;
-    h.nsensordata = csensors.iter().map(|s| s.dim).sum();
+    let nsensordata: i64 = csensors.iter().map(|s| s.dim as i64).sum();
+    if nsensordata > i32::MAX as i64 {
+        return Err(CError::msg("could not create mjData"));
+    }
+    h.nsensordata = nsensordata as i32;
     h.nq = joints.iter().map(|j| j.spec.kind.nq()).sum::<usize>() as i32;
     h.nv = joints.iter().map(|j| j.spec.kind.nv()).sum::<usize>() as i32;
     for a in &actuators {

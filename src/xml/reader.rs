@@ -115,11 +115,11 @@ fn int(el: &Element, name: &str, out: &mut i32) -> R<bool> {
             &format!("single int expected in attribute {name}"),
         ));
     }
+    // glibc converts through a long and truncates to int
     let v = digits
         .parse::<i64>()
-        .unwrap_or(i64::MAX)
-        .saturating_mul(sign);
-    *out = v.clamp(i32::MIN as i64, i32::MAX as i64) as i32;
+        .map_or(if sign < 0 { i64::MIN } else { i64::MAX }, |v| v * sign);
+    *out = v as i32;
     Ok(true)
 }
 

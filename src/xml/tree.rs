@@ -134,7 +134,8 @@ pub fn parse(text: &str) -> Result<Element, String> {
             _ => {}
         }
     }
-    if let Some(open) = stack.last() {
+    // an unclosed element after the first root is ignored, as tinyxml2 does
+    if let Some(open) = stack.first().filter(|_| root.is_none()) {
         return Err(format!(
             "XML parse error 15:\nError=XML_ERROR_PARSING ErrorID=15 (0xf) Line number={}\n",
             open.line
