@@ -15,6 +15,7 @@ pub mod passive;
 pub mod print;
 pub mod rne;
 pub mod setconst;
+pub mod solver;
 pub mod support;
 pub mod transmission;
 pub mod velocity;
