@@ -19,6 +19,7 @@ pub mod print;
 pub mod rne;
 pub mod sensor;
 pub mod setconst;
+pub mod solver;
 pub mod support;
 pub mod tendon;
 pub mod transmission;
