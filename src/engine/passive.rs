@@ -1,13 +1,13 @@
 //! Passive forces: joint springs (quaternion springs for ball and free joints), dof dampers.
 
 use super::{
-    disabled, not_implemented, Data, EngineError, Model, JNT_BALL, JNT_FREE, JNT_HINGE, JNT_SLIDE,
+    disabled, Data, EngineError, Model, JNT_BALL, JNT_FREE, JNT_HINGE, JNT_SLIDE,
 };
 use crate::abi::mjtDisableBit_;
 use crate::math::blas::add_to_scl;
 use crate::math::*;
 
-/// qfrc_passive (mj_passive, without fluid forces).
+/// qfrc_passive (mj_passive): joint and tendon springs and dampers, fluid forces.
 pub fn passive(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     d.qfrc_passive.fill(0.0);
     if disabled(m, mjtDisableBit_::mjDSBL_PASSIVE) {
@@ -55,8 +55,5 @@ pub fn passive(m: &Model, d: &mut Data) -> Result<(), EngineError> {
             add_to_scl(f, &d.ten_J[i * nv..(i + 1) * nv], frc);
         }
     }
-    if m.raw.opt.viscosity > 0.0 || m.raw.opt.density > 0.0 {
-        return Err(not_implemented("fluid forces (density, viscosity) are"));
-    }
-    Ok(())
+    super::fluid::fluid(m, d)
 }
