@@ -68,6 +68,8 @@ void mj_camlight(const mjModel *m, mjData *d);
 
 void mj_tendon(const mjModel *m, mjData *d);
 
+int mj_isSparse(const mjModel *m);
+
 void mj_transmission(const mjModel *m, mjData *d);
 
 void mj_crb(const mjModel *m, mjData *d);
@@ -325,8 +327,6 @@ void mj_constraintUpdate(const mjModel *m,
 int mj_addContact(const mjModel *m, mjData *d, const mjContact *con);
 
 int mj_isPyramidal(const mjModel *m);
-
-int mj_isSparse(const mjModel *m);
 
 int mj_isDual(const mjModel *m);
 

@@ -170,6 +170,18 @@ pub unsafe extern "C" fn mj_tendon(m: *const mjModel, d: *mut mjData) {
     run("mj_tendon", (), m, d, forward::tendon)
 }
 
+/// 1 when the model uses sparse Jacobians (opt.jacobian sparse, or auto with nv >= 60).
+#[no_mangle]
+pub unsafe extern "C" fn mj_isSparse(m: *const mjModel) -> c_int {
+    if m.is_null() {
+        errmem::error("mj_isSparse: NULL model");
+        return 0;
+    }
+    guard("mj_isSparse", 0, || {
+        Ok(engine::jacdif::is_sparse(&Model::new(&*m)) as c_int)
+    })
+}
+
 #[no_mangle]
 pub unsafe extern "C" fn mj_transmission(m: *const mjModel, d: *mut mjData) {
     run(

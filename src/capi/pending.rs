@@ -68,12 +68,6 @@ pub unsafe extern "C" fn mj_isPyramidal(m: *const mjModel) -> c_int {
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_isSparse(m: *const mjModel) -> c_int {
-    pending("mj_isSparse");
-    0 as c_int
-}
-
-#[no_mangle]
 pub unsafe extern "C" fn mj_isDual(m: *const mjModel) -> c_int {
     pending("mj_isDual");
     0 as c_int

@@ -1,7 +1,8 @@
 //! Constraint instantiation (dense Jacobian): equality, dof friction and joint-limit rows, their
 //! soft-constraint parameters (diagApprox, impedance, KBIP, R, D), the reference acceleration,
 //! the projection AR for dual solvers, and the constraint-state update of the primal cost.
-//! Tendon rows, contact rows and the sparse Jacobian are reported as not implemented.
+//! Tendon rows (equality, friction, limits) use the dense ten_J. Contact rows and the sparse
+//! Jacobian are reported as not implemented.
 
 use super::inertia::solve_m2;
 use super::jacobian::jac;
@@ -101,7 +102,7 @@ fn add_rows(
     Ok(true)
 }
 
-/// Equality rows: connect (3), weld (6), joint coupling (1).
+/// Equality rows: connect (3), weld (6), joint or tendon coupling (1).
 fn equality(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> {
     let nv = m.raw.nv as usize;
     if disabled(m, mjtDisableBit_::mjDSBL_EQUALITY) || m.raw.nemax == 0 {
@@ -164,16 +165,22 @@ fn equality(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> {
                     size = 3;
                 }
             }
-            EQ_JOINT => {
+            t @ (EQ_JOINT | EQ_TENDON) => {
                 let mut pos = [0.0; 2];
                 let mut refpos = [0.0; 2];
                 let nobj = if id[1] >= 0 { 2 } else { 1 };
                 for k in 0..nobj {
                     let jn = id[k] as usize;
+                    let jk = if k == 0 { &mut *j0 } else { &mut *j1 };
+                    if t == EQ_TENDON {
+                        pos[k] = d.ten_length[jn];
+                        refpos[k] = m.tendon_length0()[jn];
+                        jk[..nv].copy_from_slice(&d.ten_J[jn * nv..(jn + 1) * nv]);
+                        continue;
+                    }
                     let qadr = m.jnt_qposadr()[jn] as usize;
                     pos[k] = d.qpos[qadr];
                     refpos[k] = m.qpos0()[qadr];
-                    let jk = if k == 0 { &mut *j0 } else { &mut *j1 };
                     jk[..nv].fill(0.0);
                     jk[m.jnt_dofadr()[jn] as usize] = 1.0;
                 }
@@ -196,7 +203,6 @@ fn equality(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> {
                 }
                 size = 1;
             }
-            EQ_TENDON => return Err(not_implemented("tendon equality constraints are")),
             EQ_DISTANCE => {
                 return Err(EngineError(
                     "distance equality constraints are no longer supported".into(),
@@ -211,7 +217,7 @@ fn equality(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> {
     Ok(())
 }
 
-/// Dry-friction rows of dofs (tendon friction is not implemented).
+/// Dry-friction rows of dofs and tendons.
 fn friction(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> {
     let nv = m.raw.nv as usize;
     if disabled(m, mjtDisableBit_::mjDSBL_FRICTIONLOSS) {
@@ -228,13 +234,20 @@ fn friction(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> {
             }
         }
     }
-    if m.tendon_frictionloss().iter().any(|&f| f > 0.0) {
-        return Err(not_implemented("tendon frictionloss constraints are"));
+    for i in 0..m.raw.ntendon as usize {
+        let f = m.tendon_frictionloss()[i];
+        if f > 0.0 {
+            let row = &d.ten_J[i * nv..(i + 1) * nv];
+            j.copy_from_slice(row);
+            if !add_rows(m, d, j, None, None, f, 1, FRICTION_TENDON, i)? {
+                break;
+            }
+        }
     }
     Ok(())
 }
 
-/// Joint-limit rows (tendon limits are not implemented).
+/// Joint- and tendon-limit rows.
 fn limits(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> {
     let nv = m.raw.nv as usize;
     if disabled(m, mjtDisableBit_::mjDSBL_LIMIT) {
@@ -298,8 +311,24 @@ fn limits(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> {
             _ => {}
         }
     }
-    if m.tendon_limited().iter().any(|&l| l != 0) {
-        return Err(not_implemented("tendon limit constraints are"));
+    for i in 0..m.raw.ntendon as usize {
+        if m.tendon_limited()[i] == 0 {
+            continue;
+        }
+        let value = d.ten_length[i];
+        let margin = m.tendon_margin()[i];
+        for side in [-1.0f64, 1.0] {
+            let dist = side * (m.tendon_range()[2 * i + (side > 0.0) as usize] - value);
+            if dist < margin {
+                for (x, &t) in j.iter_mut().zip(&d.ten_J[i * nv..(i + 1) * nv]) {
+                    *x = t * -side;
+                }
+                let (pos, mrg) = ([dist], [margin]);
+                if !add_rows(m, d, j, Some(&pos), Some(&mrg), 0.0, 1, LIMIT_TENDON, i)? {
+                    break;
+                }
+            }
+        }
     }
     Ok(())
 }
@@ -326,10 +355,20 @@ fn diag_approx(m: &Model, d: &mut Data) -> Result<(), EngineError> {
                     }
                     v
                 }
+                EQ_TENDON => {
+                    let tw = m.tendon_invweight0();
+                    let mut v = tw[m.eq_obj1id()[id] as usize];
+                    let o2 = m.eq_obj2id()[id];
+                    if o2 >= 0 {
+                        v += tw[o2 as usize];
+                    }
+                    v
+                }
                 _ => return Err(not_implemented("this equality type is")),
             },
             FRICTION_DOF => dw[id],
             LIMIT_JOINT => dw[m.jnt_dofadr()[id] as usize],
+            FRICTION_TENDON | LIMIT_TENDON => m.tendon_invweight0()[id],
             _ => return Err(not_implemented("this constraint type is")),
         };
     }

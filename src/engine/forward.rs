@@ -44,20 +44,7 @@ pub fn fwd_position(m: &Model, d: &mut Data) -> Result<(), EngineError> {
 /// Velocity-dependent stage (mj_fwdVelocity).
 pub fn fwd_velocity(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     let (nu, nv) = (m.raw.nu as usize, m.raw.nv as usize);
-    let nten = m.raw.ntendon as usize;
-    if super::jacdif::is_sparse(m) {
-        crate::math::sparse::mul_mat_vec_sparse(
-            d.ten_velocity,
-            d.ten_J,
-            d.qvel,
-            nten,
-            d.ten_J_rownnz,
-            d.ten_J_rowadr,
-            d.ten_J_colind,
-        );
-    } else {
-        mul_mat_vec(d.ten_velocity, d.ten_J, d.qvel, nten, nv);
-    }
+    super::tendon::tendon_velocity(m, d);
     mul_mat_vec(d.actuator_velocity, d.actuator_moment, d.qvel, nu, nv);
     com_vel(m, d);
     passive(m, d)?;

@@ -5,9 +5,9 @@ use super::jacdif::{is_sparse, jac_dif_pair};
 use super::jacobian::jac;
 use super::{Data, EngineError, Model};
 use crate::abi::mjtWrap_::*;
-use crate::math::blas::{add_to_scl, mul_mat_t_vec, sub};
+use crate::math::blas::{add_to_scl, mul_mat_t_vec, mul_mat_vec, sub};
 use crate::math::misc::round;
-use crate::math::sparse::combine_sparse;
+use crate::math::sparse::{combine_sparse, mul_mat_vec_sparse};
 use crate::math::wrap::wrap;
 use crate::math::*;
 
@@ -268,4 +268,22 @@ pub fn tendon(m: &Model, d: &mut Data) -> Result<(), EngineError> {
         }
         Ok(())
     })
+}
+
+/// ten_velocity = ten_J * qvel, dense or sparse.
+pub fn tendon_velocity(m: &Model, d: &mut Data) {
+    let nten = m.raw.ntendon as usize;
+    if is_sparse(m) {
+        mul_mat_vec_sparse(
+            d.ten_velocity,
+            d.ten_J,
+            d.qvel,
+            nten,
+            d.ten_J_rownnz,
+            d.ten_J_rowadr,
+            d.ten_J_colind,
+        );
+    } else {
+        mul_mat_vec(d.ten_velocity, d.ten_J, d.qvel, nten, m.raw.nv as usize);
+    }
 }
