@@ -189,6 +189,30 @@ void mj_warning(mjData *d, int warning, int info);
 
 void mj_setConst(mjModel *m, mjData *d);
 
+void mj_makeConstraint(const mjModel *m, mjData *d);
+
+void mj_projectConstraint(const mjModel *m, mjData *d);
+
+void mj_referenceConstraint(const mjModel *m, mjData *d);
+
+void mj_constraintUpdate(const mjModel *m,
+                         mjData *d,
+                         const mjtNum *jar,
+                         mjtNum *cost,
+                         int flg_cone_hessian);
+
+int mj_addContact(const mjModel *m, mjData *d, const mjContact *con);
+
+int mj_isPyramidal(const mjModel *m);
+
+int mj_isSparse(const mjModel *m);
+
+int mj_isDual(const mjModel *m);
+
+void mj_mulJacVec(const mjModel *m, mjData *d, mjtNum *res, const mjtNum *vec);
+
+void mj_mulJacTVec(const mjModel *m, mjData *d, mjtNum *res, const mjtNum *vec);
+
 void mju_error(const char *msg);
 
 void mju_warning(const char *msg);
@@ -293,30 +317,6 @@ void mj_sensorAcc(const mjModel *m, mjData *d);
 void mj_subtreeVel(const mjModel *m, mjData *d);
 
 void mj_rnePostConstraint(const mjModel *m, mjData *d);
-
-void mj_makeConstraint(const mjModel *m, mjData *d);
-
-void mj_projectConstraint(const mjModel *m, mjData *d);
-
-void mj_referenceConstraint(const mjModel *m, mjData *d);
-
-void mj_constraintUpdate(const mjModel *m,
-                         mjData *d,
-                         const mjtNum *jar,
-                         mjtNum *cost,
-                         int flg_coneHessian);
-
-int mj_addContact(const mjModel *m, mjData *d, const mjContact *con);
-
-int mj_isPyramidal(const mjModel *m);
-
-int mj_isSparse(const mjModel *m);
-
-int mj_isDual(const mjModel *m);
-
-void mj_mulJacVec(const mjModel *m, mjData *d, mjtNum *res, const mjtNum *vec);
-
-void mj_mulJacTVec(const mjModel *m, mjData *d, mjtNum *res, const mjtNum *vec);
 
 void mj_objectVelocity(const mjModel *m,
                        const mjData *d,
