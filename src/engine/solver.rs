@@ -64,9 +64,6 @@ pub fn fwd_constraint(m: &Model, d: &mut Data) -> Result<(), EngineError> {
         d.raw.solver_iter = 0;
         return Ok(());
     }
-    if m.raw.opt.noslip_iterations > 0 {
-        return Err(not_implemented("the noslip solver is"));
-    }
     jac_view!(m, d).mul_vec(d.efc_b, d.qacc_smooth);
     for i in 0..nefc {
         d.efc_b[i] -= d.efc_aref[i];
@@ -85,6 +82,10 @@ pub fn fwd_constraint(m: &Model, d: &mut Data) -> Result<(), EngineError> {
         s => return Err(EngineError(format!("Unknown solver type {s}"))),
     }
     d.qacc_warmstart[..nv].copy_from_slice(&d.qacc[..nv]);
+    let noslip_iter = m.raw.opt.noslip_iterations;
+    if noslip_iter > 0 {
+        with_arena(d, |d, a| noslip(m, d, a, noslip_iter))?;
+    }
     tick(d, mjtTimer_::mjTIMER_CONSTRAINT);
     Ok(())
 }
@@ -168,41 +169,64 @@ fn dual_state(d: &mut Data) -> Result<i32, EngineError> {
     Ok(nactive)
 }
 
-/// Projected Gauss-Seidel on the dual (mj_solPGS), scalar constraints only.
-fn pgs(m: &Model, d: &mut Data, a: &mut Arena, maxiter: i32) -> Result<(), EngineError> {
-    let (ne, nf, nefc) = (d.raw.ne as usize, d.raw.nf as usize, d.raw.nefc as usize);
-    let nv = m.raw.nv as usize;
-    let arinv = a.alloc(nefc)?;
-    let oldstate = a.alloc_int(nefc)?;
-    let sparse = is_sparse(m);
-    // position of each diagonal element of AR
-    let diag = a.alloc_int(nefc)?;
+/// res = 1/diag(AR), or 1/max(MINVAL, diag(AR) - R) with `sub_r` (ARdiaginv).
+fn ar_diag_inv(d: &Data, sparse: bool, res: &mut [f64], sub_r: bool) -> Result<(), EngineError> {
+    let nefc = d.raw.nefc as usize;
     for i in 0..nefc {
-        diag[i] = if sparse {
+        let k = if sparse {
             let adr = d.efc_AR_rowadr[i] as usize;
             let n = d.efc_AR_rownnz[i] as usize;
             match (adr..adr + n).find(|&k| d.efc_AR_colind[k] == i as i32) {
-                Some(k) => k as i32,
+                Some(k) => k,
                 None => return Err(EngineError("AR has no diagonal element".into())),
             }
         } else {
-            (i * (nefc + 1)) as i32
+            i * (nefc + 1)
         };
-        arinv[i] = 1.0 / d.efc_AR[diag[i] as usize];
+        res[i] = if sub_r {
+            1.0 / crate::math::misc::max(MINVAL, d.efc_AR[k] - d.efc_R[i])
+        } else {
+            1.0 / d.efc_AR[k]
+        };
     }
+    Ok(())
+}
+
+/// Row i of AR times efc_force.
+fn ar_row_dot(d: &Data, sparse: bool, i: usize) -> f64 {
+    let nefc = d.raw.nefc as usize;
+    if sparse {
+        let adr = d.efc_AR_rowadr[i] as usize;
+        let n = d.efc_AR_rownnz[i] as usize;
+        dot_sparse(&d.efc_AR[adr..], d.efc_force, n, &d.efc_AR_colind[adr..])
+    } else {
+        dot(&d.efc_AR[i * nefc..], d.efc_force, nefc)
+    }
+}
+
+/// qfrc_constraint = J'*force, qacc = qacc_smooth + M^-1 qfrc_constraint (dualFinish).
+fn dual_finish(m: &Model, d: &mut Data) {
+    let nv = m.raw.nv as usize;
+    jac_view!(m, d).mul_t_vec(d.qfrc_constraint, d.efc_force);
+    solve_ld(m, d.qacc, Some(d.qfrc_constraint), 1, d.qLD, d.qLDiagInv);
+    for i in 0..nv {
+        d.qacc[i] += d.qacc_smooth[i];
+    }
+}
+
+/// Projected Gauss-Seidel on the dual (mj_solPGS), scalar constraints only.
+fn pgs(m: &Model, d: &mut Data, a: &mut Arena, maxiter: i32) -> Result<(), EngineError> {
+    let (ne, nf, nefc) = (d.raw.ne as usize, d.raw.nf as usize, d.raw.nefc as usize);
+    let arinv = a.alloc(nefc)?;
+    let oldstate = a.alloc_int(nefc)?;
+    let sparse = is_sparse(m);
+    ar_diag_inv(d, sparse, arinv, false)?;
     dual_state(d)?;
     let mut iter = 0;
     while iter < maxiter {
         let mut improvement = 0.0;
         for i in 0..nefc {
-            let res = if sparse {
-                let adr = d.efc_AR_rowadr[i] as usize;
-                let n = d.efc_AR_rownnz[i] as usize;
-                let ar = &d.efc_AR[adr..];
-                d.efc_b[i] + dot_sparse(ar, d.efc_force, n, &d.efc_AR_colind[adr..])
-            } else {
-                d.efc_b[i] + dot(&d.efc_AR[i * nefc..], d.efc_force, nefc)
-            };
+            let res = d.efc_b[i] + ar_row_dot(d, sparse, i);
             let old = d.efc_force[i];
             let f = &mut d.efc_force[i];
             *f -= res * arinv[i];
@@ -240,11 +264,59 @@ fn pgs(m: &Model, d: &mut Data, a: &mut Arena, maxiter: i32) -> Result<(), Engin
     } else {
         (nefc * nefc) as i32
     };
-    jac_view!(m, d).mul_t_vec(d.qfrc_constraint, d.efc_force);
-    solve_ld(m, d.qacc, Some(d.qfrc_constraint), 1, d.qLD, d.qLDiagInv);
-    for i in 0..nv {
-        d.qacc[i] += d.qacc_smooth[i];
+    dual_finish(m, d);
+    Ok(())
+}
+
+/// Dual clean-up of friction forces with the constraint regularizer removed (mj_solNoSlip);
+/// contact friction needs contacts and is not handled.
+fn noslip(m: &Model, d: &mut Data, a: &mut Arena, maxiter: i32) -> Result<(), EngineError> {
+    let (ne, nf, nefc) = (d.raw.ne as usize, d.raw.nf as usize, d.raw.nefc as usize);
+    let sparse = is_sparse(m);
+    let arinv = a.alloc(nefc)?;
+    let oldstate = a.alloc_int(nefc)?;
+    ar_diag_inv(d, sparse, arinv, true)?;
+    dual_state(d)?;
+    if d.efc_type[ne + nf..nefc]
+        .iter()
+        .any(|&t| t >= mjtConstraint_::mjCNSTR_CONTACT_FRICTIONLESS as i32)
+    {
+        return Err(not_implemented("noslip for contacts is"));
     }
+    let mut iter = 0;
+    while iter < maxiter {
+        let mut improvement = 0.0;
+        if iter == 0 {
+            for i in 0..nefc {
+                improvement += 0.5 * d.efc_force[i] * d.efc_force[i] * d.efc_R[i];
+            }
+        }
+        for i in ne..ne + nf {
+            let mut res = d.efc_b[i] + ar_row_dot(d, sparse, i);
+            res -= d.efc_R[i] * d.efc_force[i];
+            let old = d.efc_force[i];
+            let fl = d.efc_frictionloss[i];
+            let f = &mut d.efc_force[i];
+            *f -= res * arinv[i];
+            if *f < -fl {
+                *f = -fl;
+            } else if *f > fl {
+                *f = fl;
+            }
+            let delta = *f - old;
+            improvement -= 0.5 * delta * delta / arinv[i] + delta * res;
+        }
+        oldstate.copy_from_slice(&d.efc_state[..nefc]);
+        let nactive = dual_state(d)?;
+        let nchange = (0..nefc).filter(|&i| oldstate[i] != d.efc_state[i]).count() as i32;
+        improvement = rescale(m, improvement);
+        save_stats(d, &mut iter, improvement, 0.0, 0.0, nactive, nchange, 0, 0);
+        if improvement < m.raw.opt.noslip_tolerance {
+            break;
+        }
+    }
+    d.raw.solver_iter += iter;
+    dual_finish(m, d);
     Ok(())
 }
 
