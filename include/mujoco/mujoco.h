@@ -189,6 +189,44 @@ void mj_warning(mjData *d, int warning, int info);
 
 void mj_setConst(mjModel *m, mjData *d);
 
+void mj_subtreeVel(const mjModel *m, mjData *d);
+
+void mj_rnePostConstraint(const mjModel *m, mjData *d);
+
+void mj_objectVelocity(const mjModel *m,
+                       const mjData *d,
+                       int objtype,
+                       int objid,
+                       mjtNum *res,
+                       int flg_local);
+
+void mj_objectAcceleration(const mjModel *m,
+                           const mjData *d,
+                           int objtype,
+                           int objid,
+                           mjtNum *res,
+                           int flg_local);
+
+void mj_contactForce(const mjModel *m, const mjData *d, int id, mjtNum *result);
+
+void mj_sensorPos(const mjModel *m, mjData *d);
+
+void mj_sensorVel(const mjModel *m, mjData *d);
+
+void mj_sensorAcc(const mjModel *m, mjData *d);
+
+void mj_inverse(const mjModel *m, mjData *d);
+
+void mj_inverseSkip(const mjModel *m, mjData *d, int skipstage, int skipsensor);
+
+void mj_invPosition(const mjModel *m, mjData *d);
+
+void mj_invVelocity(const mjModel *m, mjData *d);
+
+void mj_invConstraint(const mjModel *m, mjData *d);
+
+void mj_compareFwdInv(const mjModel *m, mjData *d);
+
 void mj_makeConstraint(const mjModel *m, mjData *d);
 
 void mj_projectConstraint(const mjModel *m, mjData *d);
@@ -287,10 +325,6 @@ void mj_freeLastXML(void);
 
 int mj_printSchema(const char *filename, char *buffer, int buffer_sz, int flg_html, int flg_pad);
 
-void mj_inverse(const mjModel *m, mjData *d);
-
-void mj_inverseSkip(const mjModel *m, mjData *d, int skipstage, int skipsensor);
-
 void mj_resetCallbacks(void);
 
 int mj_setLengthRange(mjModel *m,
@@ -299,40 +333,6 @@ int mj_setLengthRange(mjModel *m,
                       const mjLROpt *opt,
                       char *error,
                       int error_sz);
-
-void mj_invPosition(const mjModel *m, mjData *d);
-
-void mj_invVelocity(const mjModel *m, mjData *d);
-
-void mj_invConstraint(const mjModel *m, mjData *d);
-
-void mj_compareFwdInv(const mjModel *m, mjData *d);
-
-void mj_sensorPos(const mjModel *m, mjData *d);
-
-void mj_sensorVel(const mjModel *m, mjData *d);
-
-void mj_sensorAcc(const mjModel *m, mjData *d);
-
-void mj_subtreeVel(const mjModel *m, mjData *d);
-
-void mj_rnePostConstraint(const mjModel *m, mjData *d);
-
-void mj_objectVelocity(const mjModel *m,
-                       const mjData *d,
-                       int objtype,
-                       int objid,
-                       mjtNum *res,
-                       int flg_local);
-
-void mj_objectAcceleration(const mjModel *m,
-                           const mjData *d,
-                           int objtype,
-                           int objid,
-                           mjtNum *res,
-                           int flg_local);
-
-void mj_contactForce(const mjModel *m, const mjData *d, int id, mjtNum *result);
 
 mjtNum mj_ray(const mjModel *m,
               const mjData *d,

@@ -10,35 +10,22 @@ use super::kinematics::{camlight, com_pos, kinematics};
 use super::linalg::{add_to, is_bad, mul_mat_t_vec, mul_mat_vec, row};
 use super::passive::passive;
 use super::rne::rne_bias;
+use super::sensor::{sensor_acc, sensor_pos, sensor_vel};
 use super::support::{energy_pos, energy_vel, reset_data, warning};
 use super::transmission::transmission;
 use super::velocity::com_vel;
-use super::{disabled, enabled, not_implemented, tick, Data, EngineError, Model};
+use super::{enabled, not_implemented, tick, Data, EngineError, Model};
 use crate::abi::*;
 use mjtTimer_::*;
 
-/// Tendon lengths and moments: only the tendon-free case exists so far.
-pub fn tendon(m: &Model) -> Result<(), EngineError> {
-    if m.raw.ntendon > 0 {
-        return Err(not_implemented("tendons are"));
-    }
-    Ok(())
-}
-
-/// Sensors are not part of this slice.
-fn sensors(m: &Model) -> Result<(), EngineError> {
-    if m.raw.nsensor > 0 && !disabled(m, mjtDisableBit_::mjDSBL_SENSOR) {
-        return Err(not_implemented("sensors are"));
-    }
-    Ok(())
-}
+pub use super::tendon::tendon;
 
 /// Position-dependent stage (mj_fwdPosition).
 pub fn fwd_position(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     kinematics(m, d)?;
     com_pos(m, d)?;
     camlight(m, d, false);
-    tendon(m)?;
+    tendon(m, d)?;
     tick(d, mjTIMER_POS_KINEMATICS);
     crb(m, d, true);
     factor_m(m, d)?;
@@ -57,6 +44,20 @@ pub fn fwd_position(m: &Model, d: &mut Data) -> Result<(), EngineError> {
 /// Velocity-dependent stage (mj_fwdVelocity).
 pub fn fwd_velocity(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     let (nu, nv) = (m.raw.nu as usize, m.raw.nv as usize);
+    let nten = m.raw.ntendon as usize;
+    if super::jacdif::is_sparse(m) {
+        crate::math::sparse::mul_mat_vec_sparse(
+            d.ten_velocity,
+            d.ten_J,
+            d.qvel,
+            nten,
+            d.ten_J_rownnz,
+            d.ten_J_rowadr,
+            d.ten_J_colind,
+        );
+    } else {
+        mul_mat_vec(d.ten_velocity, d.ten_J, d.qvel, nten, nv);
+    }
     mul_mat_vec(d.actuator_velocity, d.actuator_moment, d.qvel, nu, nv);
     com_vel(m, d);
     passive(m, d)?;
@@ -192,7 +193,7 @@ pub fn forward_skip(
     if skipstage < mjtStage_::mjSTAGE_POS as i32 {
         fwd_position(m, d)?;
         if !skipsensor {
-            sensors(m)?;
+            sensor_pos(m, d)?;
         }
         if energy {
             energy_pos(m, d);
@@ -201,7 +202,7 @@ pub fn forward_skip(
     if skipstage < mjtStage_::mjSTAGE_VEL as i32 {
         fwd_velocity(m, d)?;
         if !skipsensor {
-            sensors(m)?;
+            sensor_vel(m, d)?;
         }
         if energy {
             energy_vel(m, d)?;
@@ -211,7 +212,7 @@ pub fn forward_skip(
     fwd_acceleration(m, d)?;
     fwd_constraint(m, d)?;
     if !skipsensor {
-        sensors(m)?;
+        sensor_acc(m, d)?;
     }
     tick(d, mjTIMER_FORWARD);
     Ok(())
@@ -222,9 +223,9 @@ pub fn forward(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     forward_skip(m, d, mjtStage_::mjSTAGE_NONE as i32, false)
 }
 
-fn check_fwdinv(m: &Model) -> Result<(), EngineError> {
+fn check_fwdinv(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     if enabled(m, mjtEnableBit_::mjENBL_FWDINV) {
-        return Err(not_implemented("forward/inverse comparison (fwdinv) is"));
+        super::inverse::compare_fwd_inv(m, d)?;
     }
     Ok(())
 }
@@ -245,7 +246,7 @@ pub fn step_skip(
     check_vel(m, d)?;
     forward_skip(m, d, skipstage, skipsensor)?;
     check_acc(m, d)?;
-    check_fwdinv(m)?;
+    check_fwdinv(m, d)?;
     match m.raw.opt.integrator {
         x if x == mjtIntegrator_::mjINT_EULER as i32 => {
             euler(m, d, skipstage >= mjtStage_::mjSTAGE_POS as i32)?
@@ -265,10 +266,10 @@ pub fn step1(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     check_pos(m, d)?;
     check_vel(m, d)?;
     fwd_position(m, d)?;
-    sensors(m)?;
+    sensor_pos(m, d)?;
     energy_pos(m, d);
     fwd_velocity(m, d)?;
-    sensors(m)?;
+    sensor_vel(m, d)?;
     energy_vel(m, d)?;
     tick(d, mjTIMER_STEP);
     Ok(())
@@ -279,9 +280,9 @@ pub fn step2(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     fwd_actuation(m, d)?;
     fwd_acceleration(m, d)?;
     fwd_constraint(m, d)?;
-    sensors(m)?;
+    sensor_acc(m, d)?;
     check_acc(m, d)?;
-    check_fwdinv(m)?;
+    check_fwdinv(m, d)?;
     if m.raw.opt.integrator == mjtIntegrator_::mjINT_IMPLICIT as i32 {
         return Err(not_implemented("the implicit integrator is"));
     }

@@ -5,18 +5,23 @@
 pub mod actuation;
 pub mod collision;
 pub mod constraint;
+pub mod fluid;
 pub mod forward;
 pub mod inertia;
 pub mod integrate;
+pub mod inverse;
+pub mod jacdif;
 pub mod jacobian;
 pub mod kinematics;
 pub mod linalg;
 pub mod passive;
 pub mod print;
 pub mod rne;
+pub mod sensor;
 pub mod setconst;
 pub mod solver;
 pub mod support;
+pub mod tendon;
 pub mod transmission;
 pub mod velocity;
 
