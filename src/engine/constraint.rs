@@ -449,7 +449,22 @@ fn jac_dif_pair(
     n
 }
 
-/// Equality rows: connect (3), weld (6), joint coupling (1).
+/// Copies tendon i's Jacobian row into `jacobian` (dense: nv values; sparse: its nonzeros, with
+/// their dofs in `chain`); returns the sparse length (0 when dense).
+fn tendon_row(m: &Model, d: &Data, i: usize, jacobian: &mut [f64], chain: &mut [i32]) -> usize {
+    let nv = m.raw.nv as usize;
+    if is_sparse(m) {
+        let (adr, n) = (d.ten_J_rowadr[i] as usize, d.ten_J_rownnz[i] as usize);
+        jacobian[..n].copy_from_slice(&d.ten_J[adr..adr + n]);
+        chain[..n].copy_from_slice(&d.ten_J_colind[adr..adr + n]);
+        n
+    } else {
+        jacobian[..nv].copy_from_slice(&d.ten_J[i * nv..(i + 1) * nv]);
+        0
+    }
+}
+
+/// Equality rows: connect (3), weld (6), joint or tendon coupling (1).
 fn equality(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> {
     let nv = m.raw.nv as usize;
     if disabled(m, mjtDisableBit_::mjDSBL_EQUALITY) || m.raw.nemax == 0 {
@@ -509,30 +524,36 @@ fn equality(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> {
                     size = 3;
                 }
             }
-            EQ_JOINT => {
+            EQ_JOINT | EQ_TENDON => {
+                let joint = m.eq_type()[i] == EQ_JOINT;
                 let mut pos = [0.0; 2];
                 let mut refpos = [0.0; 2];
                 let nobj = if id[1] >= 0 { 2 } else { 1 };
+                let mut nnz = [0usize; 2];
                 for k in 0..nobj {
-                    let jn = id[k] as usize;
-                    let qadr = m.jnt_qposadr()[jn] as usize;
-                    let dof = m.jnt_dofadr()[jn];
-                    pos[k] = d.qpos[qadr];
-                    refpos[k] = m.qpos0()[qadr];
+                    let ob = id[k] as usize;
                     let jk = if k == 0 { &mut *j0 } else { &mut *j1 };
-                    if sparse {
-                        jk[0] = 1.0;
-                        if k == 0 {
-                            chain[0] = dof;
+                    let ck = if k == 0 { &mut *chain } else { &mut *chain2 };
+                    if joint {
+                        let qadr = m.jnt_qposadr()[ob] as usize;
+                        let dof = m.jnt_dofadr()[ob];
+                        pos[k] = d.qpos[qadr];
+                        refpos[k] = m.qpos0()[qadr];
+                        if sparse {
+                            nnz[k] = 1;
+                            ck[0] = dof;
+                            jk[0] = 1.0;
                         } else {
-                            chain2[0] = dof;
+                            jk[..nv].fill(0.0);
+                            jk[dof as usize] = 1.0;
                         }
                     } else {
-                        jk[..nv].fill(0.0);
-                        jk[dof as usize] = 1.0;
+                        pos[k] = d.ten_length[ob];
+                        refpos[k] = m.tendon_length0()[ob];
+                        nnz[k] = tendon_row(m, d, ob, jk, ck);
                     }
                 }
-                n = 1;
+                n = nnz[0];
                 if nobj == 2 {
                     let dif = pos[1] - refpos[1];
                     cpos[0] = pos[0]
@@ -548,7 +569,7 @@ fn equality(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> {
                         + 4.0 * data[4] * dif * dif * dif;
                     if sparse {
                         n = combine_sparse(
-                            j0, j1, nv, 1.0, -deriv, 1, 1, chain, chain2, buf, buf_ind,
+                            j0, j1, nv, 1.0, -deriv, nnz[0], nnz[1], chain, chain2, buf, buf_ind,
                         );
                     } else {
                         add_to_scl(&mut j0[..nv], &j1[..nv], -deriv);
@@ -558,7 +579,6 @@ fn equality(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> {
                 }
                 size = 1;
             }
-            EQ_TENDON => return Err(not_implemented("tendon equality constraints are")),
             EQ_DISTANCE => {
                 return Err(EngineError(
                     "distance equality constraints are no longer supported".into(),
@@ -598,8 +618,16 @@ fn friction(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> {
             }
         }
     }
-    if m.tendon_frictionloss().iter().any(|&f| f > 0.0) {
-        return Err(not_implemented("tendon frictionloss constraints are"));
+    let chain = a.alloc_int(nv)?;
+    for i in 0..m.raw.ntendon as usize {
+        let f = m.tendon_frictionloss()[i];
+        if f > 0.0 {
+            let n = tendon_row(m, d, i, j, chain);
+            let ch = if sparse { Some(&chain[..n]) } else { None };
+            if !add_rows(m, d, j, ch, None, None, f, 1, FRICTION_TENDON, i)? {
+                break;
+            }
+        }
     }
     Ok(())
 }
@@ -666,8 +694,29 @@ fn limits(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> {
             _ => {}
         }
     }
-    if m.tendon_limited().iter().any(|&l| l != 0) {
-        return Err(not_implemented("tendon limit constraints are"));
+    let chain = a.alloc_int(nv)?;
+    for i in 0..m.raw.ntendon as usize {
+        if m.tendon_limited()[i] == 0 {
+            continue;
+        }
+        let value = d.ten_length[i];
+        let margin = m.tendon_margin()[i];
+        for side in [-1.0f64, 1.0] {
+            let lim = m.tendon_range()[2 * i + (side > 0.0) as usize];
+            let dist = side * (lim - value);
+            if dist < margin {
+                let n = tendon_row(m, d, i, j, chain);
+                let len = if sparse { n } else { nv };
+                for x in &mut j[..len] {
+                    *x *= -side;
+                }
+                let ch = if sparse { Some(&chain[..n]) } else { None };
+                let (p, mg) = ([dist], [margin]);
+                if !add_rows(m, d, j, ch, Some(&p), Some(&mg), 0.0, 1, LIMIT_TENDON, i)? {
+                    break;
+                }
+            }
+        }
     }
     Ok(())
 }
@@ -676,6 +725,7 @@ fn limits(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> {
 fn diag_approx(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     let iw = m.body_invweight0();
     let dw = m.dof_invweight0();
+    let tw = m.tendon_invweight0();
     for i in 0..d.raw.nefc as usize {
         let id = d.efc_id[i] as usize;
         d.efc_diagApprox[i] = match d.efc_type[i] {
@@ -694,10 +744,19 @@ fn diag_approx(m: &Model, d: &mut Data) -> Result<(), EngineError> {
                     }
                     v
                 }
+                EQ_TENDON => {
+                    let mut v = tw[m.eq_obj1id()[id] as usize];
+                    let o2 = m.eq_obj2id()[id];
+                    if o2 >= 0 {
+                        v += tw[o2 as usize];
+                    }
+                    v
+                }
                 _ => return Err(not_implemented("this equality type is")),
             },
             FRICTION_DOF => dw[id],
             LIMIT_JOINT => dw[m.jnt_dofadr()[id] as usize],
+            FRICTION_TENDON | LIMIT_TENDON => tw[id],
             _ => return Err(not_implemented("this constraint type is")),
         };
     }
