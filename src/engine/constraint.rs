@@ -1,11 +1,12 @@
-//! Constraint instantiation (dense Jacobian): equality, dof friction and joint-limit rows, their
-//! soft-constraint parameters (diagApprox, impedance, KBIP, R, D), the reference acceleration,
-//! the projection AR for dual solvers, and the constraint-state update of the primal cost.
-//! Tendon rows, contact rows and the sparse Jacobian are reported as not implemented.
+//! Constraint instantiation, dense or sparse Jacobian: equality (connect, weld, joint, tendon),
+//! dof and tendon friction, joint and tendon limit rows; their soft-constraint parameters
+//! (diagApprox, impedance, KBIP, R, D), the reference acceleration, the projection AR for dual
+//! solvers, and the constraint-state update of the primal cost. Contact rows are reported as
+//! not implemented.
 
 use super::inertia::solve_m2;
 use super::jacobian::jac;
-use super::linalg::max;
+use super::linalg::{max, min};
 use super::support::warning;
 use super::{disabled, not_implemented, Data, EngineError, Model, MINVAL};
 use super::{JNT_BALL, JNT_HINGE, JNT_SLIDE};
@@ -782,16 +783,12 @@ fn sol_params(m: &Model, d: &Data, i: usize) -> ([f64; 2], [f64; 5]) {
     if !disabled(m, mjtDisableBit_::mjDSBL_REFSAFE) && solref[0] > 0.0 {
         solref[0] = max(solref[0], 2.0 * m.raw.opt.timestep);
     }
-    solimp[0] = min_c(MAXIMP, max(MINIMP, solimp[0]));
-    solimp[1] = min_c(MAXIMP, max(MINIMP, solimp[1]));
+    solimp[0] = min(MAXIMP, max(MINIMP, solimp[0]));
+    solimp[1] = min(MAXIMP, max(MINIMP, solimp[1]));
     solimp[2] = max(0.0, solimp[2]);
-    solimp[3] = min_c(MAXIMP, max(MINIMP, solimp[3]));
+    solimp[3] = min(MAXIMP, max(MINIMP, solimp[3]));
     solimp[4] = max(1.0, solimp[4]);
     (solref, solimp)
-}
-
-fn min_c(a: f64, b: f64) -> f64 {
-    crate::math::misc::min(a, b)
 }
 
 /// Impedance and its derivative at distance `pos` (with margin) for `solimp`.

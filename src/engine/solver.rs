@@ -1,5 +1,6 @@
-//! Constraint solvers (dense Jacobian): warm start, projected Gauss-Seidel in the dual, and the
-//! primal conjugate-gradient and Newton methods with their exact line search (mj_fwdConstraint).
+//! Constraint solvers (mj_fwdConstraint), dense or sparse: warm start, projected Gauss-Seidel
+//! and noslip in the dual, and the primal conjugate-gradient and Newton methods with their exact
+//! line search. Contact (cone) rows are not handled: they error before reaching a solver.
 
 use super::constraint::{constraint_update, is_sparse, jac_view, with_arena};
 use super::inertia::solve_ld;
@@ -488,11 +489,9 @@ fn search(m: &Model, d: &mut Data, c: &mut Ctx) -> f64 {
     if snorm < MINVAL {
         return 0.0;
     }
-    let scale = m.raw.stat.meaninertia * m.raw.nv.max(1) as f64;
     let gtol =
         m.raw.opt.tolerance * LS_TOLSCL * snorm * m.raw.stat.meaninertia * m.raw.nv.max(1) as f64;
     let slopescl = 1.0 / (snorm * m.raw.stat.meaninertia * m.raw.nv.max(1) as f64);
-    let _ = scale;
     mul_m(m, d.qM, c.mv, c.search);
     jac_view!(m, d).mul_vec(c.jv, c.search);
     prepare(m, d, c);
