@@ -886,7 +886,8 @@ fn make_impedance(m: &Model, d: &mut Data) {
     }
 }
 
-/// Runs `f` with a scratch arena taken from `d` (released afterwards).
+/// Runs `f` with a scratch arena taken from `d` (released afterwards); inside `f`, `d.arena`
+/// is empty, so scratch must come from the arena argument.
 pub fn with_arena<R>(d: &mut Data, f: impl FnOnce(&mut Data, &mut Arena) -> R) -> R {
     let mut arena = std::mem::replace(&mut d.arena, Arena::over(&mut []));
     let r = arena.scope(|a| f(d, a));
