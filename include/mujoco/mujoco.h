@@ -68,8 +68,6 @@ void mj_camlight(const mjModel *m, mjData *d);
 
 void mj_tendon(const mjModel *m, mjData *d);
 
-int mj_isSparse(const mjModel *m);
-
 void mj_transmission(const mjModel *m, mjData *d);
 
 void mj_crb(const mjModel *m, mjData *d);
@@ -229,6 +227,30 @@ void mj_invConstraint(const mjModel *m, mjData *d);
 
 void mj_compareFwdInv(const mjModel *m, mjData *d);
 
+void mj_makeConstraint(const mjModel *m, mjData *d);
+
+void mj_projectConstraint(const mjModel *m, mjData *d);
+
+void mj_referenceConstraint(const mjModel *m, mjData *d);
+
+void mj_constraintUpdate(const mjModel *m,
+                         mjData *d,
+                         const mjtNum *jar,
+                         mjtNum *cost,
+                         int flg_cone_hessian);
+
+int mj_addContact(const mjModel *m, mjData *d, const mjContact *con);
+
+int mj_isPyramidal(const mjModel *m);
+
+int mj_isSparse(const mjModel *m);
+
+int mj_isDual(const mjModel *m);
+
+void mj_mulJacVec(const mjModel *m, mjData *d, mjtNum *res, const mjtNum *vec);
+
+void mj_mulJacTVec(const mjModel *m, mjData *d, mjtNum *res, const mjtNum *vec);
+
 void mju_error(const char *msg);
 
 void mju_warning(const char *msg);
@@ -311,28 +333,6 @@ int mj_setLengthRange(mjModel *m,
                       const mjLROpt *opt,
                       char *error,
                       int error_sz);
-
-void mj_makeConstraint(const mjModel *m, mjData *d);
-
-void mj_projectConstraint(const mjModel *m, mjData *d);
-
-void mj_referenceConstraint(const mjModel *m, mjData *d);
-
-void mj_constraintUpdate(const mjModel *m,
-                         mjData *d,
-                         const mjtNum *jar,
-                         mjtNum *cost,
-                         int flg_coneHessian);
-
-int mj_addContact(const mjModel *m, mjData *d, const mjContact *con);
-
-int mj_isPyramidal(const mjModel *m);
-
-int mj_isDual(const mjModel *m);
-
-void mj_mulJacVec(const mjModel *m, mjData *d, mjtNum *res, const mjtNum *vec);
-
-void mj_mulJacTVec(const mjModel *m, mjData *d, mjtNum *res, const mjtNum *vec);
 
 mjtNum mj_ray(const mjModel *m,
               const mjData *d,

@@ -5,7 +5,7 @@ use super::globals::*;
 use super::guard;
 use crate::abi::view::{Data, EngineError, Model, ModelMut};
 use crate::abi::*;
-use crate::engine::{self, forward, inertia, integrate, jacobian, kinematics, support};
+use crate::engine::{self, constraint, forward, inertia, integrate, jacobian, kinematics, support};
 use std::os::raw::{c_char, c_int};
 
 unsafe fn slice<'a>(p: *const f64, n: usize) -> &'a [f64] {
@@ -168,18 +168,6 @@ pub unsafe extern "C" fn mj_camlight(m: *const mjModel, d: *mut mjData) {
 #[no_mangle]
 pub unsafe extern "C" fn mj_tendon(m: *const mjModel, d: *mut mjData) {
     run("mj_tendon", (), m, d, forward::tendon)
-}
-
-/// 1 when the model uses sparse Jacobians (opt.jacobian sparse, or auto with nv >= 60).
-#[no_mangle]
-pub unsafe extern "C" fn mj_isSparse(m: *const mjModel) -> c_int {
-    if m.is_null() {
-        errmem::error("mj_isSparse: NULL model");
-        return 0;
-    }
-    guard("mj_isSparse", 0, || {
-        Ok(engine::jacdif::is_sparse(&Model::new(&*m)) as c_int)
-    })
 }
 
 #[no_mangle]
@@ -1020,4 +1008,119 @@ pub unsafe extern "C" fn mj_compareFwdInv(m: *const mjModel, d: *mut mjData) {
         d,
         engine::inverse::compare_fwd_inv,
     )
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_makeConstraint(m: *const mjModel, d: *mut mjData) {
+    run("mj_makeConstraint", (), m, d, constraint::make_constraint)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_projectConstraint(m: *const mjModel, d: *mut mjData) {
+    run(
+        "mj_projectConstraint",
+        (),
+        m,
+        d,
+        constraint::project_constraint,
+    )
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_referenceConstraint(m: *const mjModel, d: *mut mjData) {
+    run("mj_referenceConstraint", (), m, d, |m, d| {
+        constraint::reference_constraint(m, d);
+        Ok(())
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_constraintUpdate(
+    m: *const mjModel,
+    d: *mut mjData,
+    jar: *const mjtNum,
+    cost: *mut mjtNum,
+    flg_cone_hessian: c_int,
+) {
+    let _ = flg_cone_hessian; // cone Hessians need elliptic contacts, which error before
+    let nefc = if d.is_null() {
+        0
+    } else {
+        (*d).nefc.max(0) as usize
+    };
+    let jar: Vec<f64> = slice(jar, nefc).to_vec();
+    run("mj_constraintUpdate", (), m, d, |m, d| {
+        let c = constraint::constraint_update(m, d, &jar, !cost.is_null())?;
+        if !cost.is_null() {
+            *cost = c;
+        }
+        Ok(())
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_addContact(
+    m: *const mjModel,
+    d: *mut mjData,
+    con: *const mjContact,
+) -> c_int {
+    run("mj_addContact", 1, m, d, |m, d| {
+        if d.raw.ncon >= m.raw.nconmax {
+            support::warning(d.raw, mjtWarning_::mjWARN_CONTACTFULL as i32, m.raw.nconmax)?;
+            return Ok(1);
+        }
+        d.contact[d.raw.ncon as usize] = std::ptr::read(con);
+        d.raw.ncon += 1;
+        Ok(0)
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_isPyramidal(m: *const mjModel) -> c_int {
+    constraint::is_pyramidal(&Model::new(&*m)) as c_int
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_isSparse(m: *const mjModel) -> c_int {
+    constraint::is_sparse(&Model::new(&*m)) as c_int
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_isDual(m: *const mjModel) -> c_int {
+    constraint::is_dual(&Model::new(&*m)) as c_int
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_mulJacVec(
+    m: *const mjModel,
+    d: *mut mjData,
+    res: *mut mjtNum,
+    vec: *const mjtNum,
+) {
+    if m.is_null() || d.is_null() {
+        return;
+    }
+    let v: Vec<f64> = slice(vec, (*m).nv as usize).to_vec();
+    let nefc = (*d).nefc.max(0) as usize;
+    run("mj_mulJacVec", (), m, d, |m, d| {
+        constraint::mul_jac_vec(m, d, slice_mut(res, nefc), &v)
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_mulJacTVec(
+    m: *const mjModel,
+    d: *mut mjData,
+    res: *mut mjtNum,
+    vec: *const mjtNum,
+) {
+    if m.is_null() || d.is_null() {
+        return;
+    }
+    let nefc = (*d).nefc.max(0) as usize;
+    let v: Vec<f64> = slice(vec, nefc).to_vec();
+    let nv = (*m).nv as usize;
+    run("mj_mulJacTVec", (), m, d, |m, d| {
+        constraint::mul_jac_t_vec(m, d, slice_mut(res, nv), &v)
+    })
 }

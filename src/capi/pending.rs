@@ -36,54 +36,6 @@ pub unsafe extern "C" fn mj_setLengthRange(m: *mut mjModel, d: *mut mjData, inde
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_makeConstraint(m: *const mjModel, d: *mut mjData) {
-    pending("mj_makeConstraint");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_projectConstraint(m: *const mjModel, d: *mut mjData) {
-    pending("mj_projectConstraint");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_referenceConstraint(m: *const mjModel, d: *mut mjData) {
-    pending("mj_referenceConstraint");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_constraintUpdate(m: *const mjModel, d: *mut mjData, jar: *const mjtNum, cost: *mut mjtNum, flg_coneHessian: c_int) {
-    pending("mj_constraintUpdate");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_addContact(m: *const mjModel, d: *mut mjData, con: *const mjContact) -> c_int {
-    pending("mj_addContact");
-    0 as c_int
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_isPyramidal(m: *const mjModel) -> c_int {
-    pending("mj_isPyramidal");
-    0 as c_int
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_isDual(m: *const mjModel) -> c_int {
-    pending("mj_isDual");
-    0 as c_int
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_mulJacVec(m: *const mjModel, d: *mut mjData, res: *mut mjtNum, vec: *const mjtNum) {
-    pending("mj_mulJacVec");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_mulJacTVec(m: *const mjModel, d: *mut mjData, res: *mut mjtNum, vec: *const mjtNum) {
-    pending("mj_mulJacTVec");
-}
-
-#[no_mangle]
 pub unsafe extern "C" fn mj_ray(m: *const mjModel, d: *const mjData, pnt: *const mjtNum, vec: *const mjtNum, geomgroup: *const mjtByte, flg_static: mjtByte, bodyexclude: c_int, geomid: *mut c_int) -> mjtNum {
     pending("mj_ray");
     0.0

@@ -1,18 +1,22 @@
-//! Constraint instantiation (dense Jacobian): equality, dof friction and joint-limit rows, their
-//! soft-constraint parameters (diagApprox, impedance, KBIP, R, D), the reference acceleration,
-//! the projection AR for dual solvers, and the constraint-state update of the primal cost.
-//! Tendon rows (equality, friction, limits) use the dense ten_J. Contact rows and the sparse
-//! Jacobian are reported as not implemented.
+//! Constraint instantiation, dense or sparse Jacobian: equality (connect, weld, joint, tendon),
+//! dof and tendon friction, joint and tendon limit rows; their soft-constraint parameters
+//! (diagApprox, impedance, KBIP, R, D), the reference acceleration, the projection AR for dual
+//! solvers, and the constraint-state update of the primal cost. Contact rows are reported as
+//! not implemented.
 
 use super::inertia::solve_m2;
 use super::jacobian::jac;
-use super::linalg::max;
+use super::linalg::{max, min};
 use super::support::warning;
 use super::{disabled, not_implemented, Data, EngineError, Model, MINVAL};
 use super::{JNT_BALL, JNT_HINGE, JNT_SLIDE};
 use crate::abi::view::Arena;
 use crate::abi::*;
 use crate::math::blas::{add_to_scl, mul_mat_t_vec, mul_mat_vec, norm, sqr_mat_td, transpose};
+use crate::math::sparse::{
+    combine_sparse, compress_sparse, mul_mat_vec_sparse, sqr_mat_td_sparse, super_sparse,
+    transpose_sparse, SparseRef,
+};
 use crate::math::*;
 use mjtConstraintState_::*;
 use mjtConstraint_::*;
@@ -36,39 +40,124 @@ pub fn is_pyramidal(m: &Model) -> bool {
     m.raw.opt.cone == mjtCone_::mjCONE_PYRAMIDAL as i32
 }
 
-/// Is the constraint Jacobian sparse (mj_isSparse)?
-pub fn is_sparse(m: &Model) -> bool {
-    let j = m.raw.opt.jacobian;
-    j == mjtJacobian_::mjJAC_SPARSE as i32
-        || (j == mjtJacobian_::mjJAC_AUTO as i32 && m.raw.nv >= 60)
-}
+pub use super::jacdif::is_sparse;
 
 /// Does the solver work in the dual (mj_isDual)?
 pub fn is_dual(m: &Model) -> bool {
     m.raw.opt.solver == mjtSolver_::mjSOL_PGS as i32 || m.raw.opt.noslip_iterations > 0
 }
 
-/// res = efc_J * vec (mj_mulJacVec, dense Jacobian).
-pub fn mul_jac_vec(m: &Model, nefc: usize, efc_j: &[f64], res: &mut [f64], vec: &[f64]) {
-    if nefc > 0 {
-        mul_mat_vec(res, efc_j, vec, nefc, m.raw.nv as usize);
+/// The constraint Jacobian of an mjData: dense (nefc x nv) or sparse with its transpose.
+pub struct JacView<'x> {
+    pub sparse: bool,
+    pub nv: usize,
+    pub nefc: usize,
+    pub j: &'x [f64],
+    pub rownnz: &'x [i32],
+    pub rowadr: &'x [i32],
+    pub colind: &'x [i32],
+    pub jt: &'x [f64],
+    pub t_rownnz: &'x [i32],
+    pub t_rowadr: &'x [i32],
+    pub t_colind: &'x [i32],
+}
+
+/// Borrows the Jacobian fields of `d` (field by field, so other fields stay writable).
+macro_rules! jac_view {
+    ($m:expr, $d:expr) => {
+        $crate::engine::constraint::JacView {
+            sparse: $crate::engine::constraint::is_sparse($m),
+            nv: $m.raw.nv as usize,
+            nefc: $d.raw.nefc as usize,
+            j: &*$d.efc_J,
+            rownnz: &*$d.efc_J_rownnz,
+            rowadr: &*$d.efc_J_rowadr,
+            colind: &*$d.efc_J_colind,
+            jt: &*$d.efc_JT,
+            t_rownnz: &*$d.efc_JT_rownnz,
+            t_rowadr: &*$d.efc_JT_rowadr,
+            t_colind: &*$d.efc_JT_colind,
+        }
+    };
+}
+pub(crate) use jac_view;
+
+impl JacView<'_> {
+    /// res = J * vec (mj_mulJacVec).
+    pub fn mul_vec(&self, res: &mut [f64], vec: &[f64]) {
+        if self.nefc == 0 {
+            return;
+        }
+        if self.sparse {
+            mul_mat_vec_sparse(
+                res,
+                self.j,
+                vec,
+                self.nefc,
+                self.rownnz,
+                self.rowadr,
+                self.colind,
+            );
+        } else {
+            mul_mat_vec(res, self.j, vec, self.nefc, self.nv);
+        }
+    }
+
+    /// res = J' * vec (mj_mulJacTVec).
+    pub fn mul_t_vec(&self, res: &mut [f64], vec: &[f64]) {
+        if self.nefc == 0 {
+            return;
+        }
+        if self.sparse {
+            let (nnz, adr, ind) = (self.t_rownnz, self.t_rowadr, self.t_colind);
+            mul_mat_vec_sparse(res, self.jt, vec, self.nv, nnz, adr, ind);
+        } else {
+            mul_mat_t_vec(res, self.j, vec, self.nefc, self.nv);
+        }
+    }
+
+    /// Row i as (values, column indices); dense rows have no index list.
+    pub fn row(&self, i: usize) -> (&[f64], Option<&[i32]>) {
+        if self.sparse {
+            let (adr, n) = (self.rowadr[i] as usize, self.rownnz[i] as usize);
+            (&self.j[adr..adr + n], Some(&self.colind[adr..adr + n]))
+        } else {
+            (&self.j[i * self.nv..(i + 1) * self.nv], None)
+        }
     }
 }
 
-/// res = efc_J' * vec (mj_mulJacTVec, dense Jacobian).
-pub fn mul_jac_t_vec(m: &Model, nefc: usize, efc_j: &[f64], res: &mut [f64], vec: &[f64]) {
-    if nefc > 0 {
-        mul_mat_t_vec(res, efc_j, vec, nefc, m.raw.nv as usize);
-    }
+/// res = efc_J * vec for the exported mj_mulJacVec.
+pub fn mul_jac_vec(
+    m: &Model,
+    d: &mut Data,
+    res: &mut [f64],
+    vec: &[f64],
+) -> Result<(), EngineError> {
+    jac_view!(m, d).mul_vec(res, vec);
+    Ok(())
 }
 
-/// Appends `size` rows (dense, `size` x nv) unless they are all zero for a non-contact
-/// constraint (mj_addConstraint). Returns false when the buffer is full (warning issued).
+/// res = efc_J' * vec for the exported mj_mulJacTVec.
+pub fn mul_jac_t_vec(
+    m: &Model,
+    d: &mut Data,
+    res: &mut [f64],
+    vec: &[f64],
+) -> Result<(), EngineError> {
+    jac_view!(m, d).mul_t_vec(res, vec);
+    Ok(())
+}
+
+/// Appends `size` rows unless they are empty (mj_addConstraint): dense rows are `size` x nv,
+/// sparse rows `size` x chain.len() over the dofs in `chain`. Returns false when the buffer is
+/// full (warning issued).
 #[allow(clippy::too_many_arguments)]
 fn add_rows(
     m: &Model,
     d: &mut Data,
     jacobian: &[f64],
+    chain: Option<&[i32]>,
     pos: Option<&[f64]>,
     margin: Option<&[f64]>,
     frictionloss: f64,
@@ -82,10 +171,32 @@ fn add_rows(
         warning(d.raw, mjtWarning_::mjWARN_CNSTRFULL as i32, m.raw.njmax)?;
         return Ok(false);
     }
-    if jacobian[..size * nv].iter().all(|&x| x == 0.0) {
-        return Ok(true);
+    if !is_sparse(m) {
+        if jacobian[..size * nv].iter().all(|&x| x == 0.0) {
+            return Ok(true);
+        }
+        d.efc_J[nefc * nv..(nefc + size) * nv].copy_from_slice(&jacobian[..size * nv]);
+    } else {
+        let chain = chain.ok_or_else(|| {
+            EngineError("Sparse mj_addConstraint called with dense arguments".into())
+        })?;
+        let n = chain.len();
+        for i in nefc..nefc + size {
+            let adr = if i > 0 {
+                d.efc_J_rowadr[i - 1] + d.efc_J_rownnz[i - 1]
+            } else {
+                0
+            };
+            d.efc_J_rowadr[i] = adr;
+            d.efc_J_rownnz[i] = n as i32;
+            let adr = adr as usize;
+            d.efc_J_colind[adr..adr + n].copy_from_slice(chain);
+            d.efc_J[adr..adr + n].copy_from_slice(&jacobian[(i - nefc) * n..(i - nefc + 1) * n]);
+        }
+        if n == 0 {
+            return Ok(true);
+        }
     }
-    d.efc_J[nefc * nv..(nefc + size) * nv].copy_from_slice(&jacobian[..size * nv]);
     for i in 0..size {
         d.efc_pos[nefc + i] = pos.map_or(0.0, |p| p[i]);
         d.efc_margin[nefc + i] = margin.map_or(0.0, |p| p[i]);
@@ -102,22 +213,276 @@ fn add_rows(
     Ok(true)
 }
 
+/// Increasing list of the dofs moving either body (mj_mergeChain); returns its length.
+fn merge_chain(m: &Model, chain: &mut [i32], mut b1: usize, mut b2: usize) -> usize {
+    let (dofnum, parent) = (m.body_dofnum(), m.body_parentid());
+    while b1 != 0 && dofnum[b1] == 0 {
+        b1 = parent[b1] as usize;
+    }
+    while b2 != 0 && dofnum[b2] == 0 {
+        b2 = parent[b2] as usize;
+    }
+    if b1 == 0 && b2 == 0 {
+        return 0;
+    }
+    let mut da1 = m.body_dofadr()[b1] + dofnum[b1] - 1;
+    let mut da2 = m.body_dofadr()[b2] + dofnum[b2] - 1;
+    let mut n = 0;
+    while da1 >= 0 || da2 >= 0 {
+        let c = da1.max(da2);
+        chain[n] = c;
+        if da1 == c {
+            da1 = m.dof_parentid()[da1 as usize];
+        }
+        if da2 == c {
+            da2 = m.dof_parentid()[da2 as usize];
+        }
+        n += 1;
+    }
+    chain[..n].reverse();
+    n
+}
+
+/// Dofs of two simple bodies, lower body id first (mj_mergeChainSimple).
+fn merge_chain_simple(m: &Model, chain: &mut [i32], b1: usize, b2: usize) -> usize {
+    let (b1, b2) = if b1 > b2 { (b2, b1) } else { (b1, b2) };
+    let (n1, n2) = (m.body_dofnum()[b1] as usize, m.body_dofnum()[b2] as usize);
+    for i in 0..n1 {
+        chain[i] = m.body_dofadr()[b1] + i as i32;
+    }
+    for i in 0..n2 {
+        chain[n1 + i] = m.body_dofadr()[b2] + i as i32;
+    }
+    n1 + n2
+}
+
+/// Point Jacobian in the columns of `chain` (mj_jacSparse): rows of length n = chain.len().
+fn jac_sparse(
+    m: &Model,
+    d: &Data,
+    jacp: &mut [f64],
+    jacr: Option<&mut [f64]>,
+    point: &Vec3,
+    body: usize,
+    chain: &[i32],
+) {
+    let n = chain.len();
+    jacp[..3 * n].fill(0.0);
+    let mut jacr = jacr;
+    if let Some(r) = jacr.as_deref_mut() {
+        r[..3 * n].fill(0.0);
+    }
+    let offset = sub3(
+        point,
+        &v3(&d.subtree_com[3 * m.body_rootid()[body] as usize..]),
+    );
+    let mut b = body;
+    while b != 0 && m.body_dofnum()[b] == 0 {
+        b = m.body_parentid()[b] as usize;
+    }
+    if b == 0 {
+        return;
+    }
+    let mut da = m.body_dofadr()[b] + m.body_dofnum()[b] - 1;
+    let mut ci = n as isize - 1;
+    while da >= 0 {
+        while ci >= 0 && chain[ci as usize] > da {
+            ci -= 1;
+        }
+        let (c, k) = (&d.cdof[6 * da as usize..6 * da as usize + 6], ci as usize);
+        if let Some(r) = jacr.as_deref_mut() {
+            r[k] = c[0];
+            r[k + n] = c[1];
+            r[k + 2 * n] = c[2];
+        }
+        let t = cross(&v3(c), &offset);
+        jacp[k] = c[3] + t[0];
+        jacp[k + n] = c[4] + t[1];
+        jacp[k + 2 * n] = c[5] + t[2];
+        da = m.dof_parentid()[da as usize];
+    }
+}
+
+/// Signed Jacobian columns of a simple body's own dofs from column `start` (mj_jacSparseSimple).
+#[allow(clippy::too_many_arguments)]
+fn jac_sparse_simple(
+    m: &Model,
+    d: &Data,
+    jacdifp: &mut [f64],
+    jacdifr: Option<&mut [f64]>,
+    point: &Vec3,
+    body: usize,
+    second: bool,
+    n: usize,
+    start: usize,
+) {
+    let offset = sub3(
+        point,
+        &v3(&d.subtree_com[3 * m.body_rootid()[body] as usize..]),
+    );
+    if m.body_dofnum()[body] == 0 {
+        return;
+    }
+    let mut jacdifr = jacdifr;
+    let adr = m.body_dofadr()[body] as usize;
+    for (k, da) in (adr..adr + m.body_dofnum()[body] as usize).enumerate() {
+        let ci = start + k;
+        let c = &d.cdof[6 * da..6 * da + 6];
+        if let Some(r) = jacdifr.as_deref_mut() {
+            for a in 0..3 {
+                r[ci + a * n] = if second { c[a] } else { -c[a] };
+            }
+        }
+        let t = cross(&v3(c), &offset);
+        for a in 0..3 {
+            let v = c[3 + a] + t[a];
+            jacdifp[ci + a * n] = if second { v } else { -v };
+        }
+    }
+}
+
+/// Jacobian of (b2, pos2) minus that of (b1, pos1) (mj_jacDifPair): translation in
+/// jacdif[..3n], rotation (when `rot`) in jacdif[3nv..3nv+3n]; returns n (nv when dense).
+#[allow(clippy::too_many_arguments)]
+fn jac_dif_pair(
+    m: &Model,
+    d: &Data,
+    chain: &mut [i32],
+    b1: usize,
+    b2: usize,
+    pos1: &Vec3,
+    pos2: &Vec3,
+    jac1: &mut [f64],
+    jac2: &mut [f64],
+    jacdif: &mut [f64],
+    rot: bool,
+) -> usize {
+    let nv = m.raw.nv as usize;
+    if nv == 0 {
+        return 0;
+    }
+    let simple = m.body_simple()[b1] != 0 && m.body_simple()[b2] != 0;
+    let sparse = is_sparse(m);
+    let n = if !sparse {
+        nv
+    } else if simple {
+        merge_chain_simple(m, chain, b1, b2)
+    } else {
+        merge_chain(m, chain, b1, b2)
+    };
+    if n == 0 {
+        return 0;
+    }
+    let (j1p, j1r) = jac1.split_at_mut(3 * nv);
+    let (j2p, j2r) = jac2.split_at_mut(3 * nv);
+    let (jdp, jdr) = jacdif.split_at_mut(3 * nv);
+    fn pick(r: &mut [f64], rot: bool) -> Option<&mut [f64]> {
+        if rot {
+            Some(r)
+        } else {
+            None
+        }
+    }
+    if sparse && simple {
+        let (n1, n2) = (m.body_dofnum()[b1] as usize, m.body_dofnum()[b2] as usize);
+        let s1 = if b1 < b2 { 0 } else { n2 };
+        let s2 = if b2 < b1 { 0 } else { n1 };
+        jac_sparse_simple(
+            m,
+            d,
+            jdp,
+            if rot { Some(&mut *jdr) } else { None },
+            pos1,
+            b1,
+            false,
+            n,
+            s1,
+        );
+        jac_sparse_simple(
+            m,
+            d,
+            jdp,
+            if rot { Some(&mut *jdr) } else { None },
+            pos2,
+            b2,
+            true,
+            n,
+            s2,
+        );
+        return n;
+    }
+    if sparse {
+        jac_sparse(m, d, j1p, pick(j1r, rot), pos1, b1, &chain[..n]);
+        jac_sparse(m, d, j2p, pick(j2r, rot), pos2, b2, &chain[..n]);
+    } else {
+        jac(
+            m,
+            d.cdof,
+            d.subtree_com,
+            pos1,
+            b1,
+            Some(j1p),
+            pick(j1r, rot),
+        );
+        jac(
+            m,
+            d.cdof,
+            d.subtree_com,
+            pos2,
+            b2,
+            Some(j2p),
+            pick(j2r, rot),
+        );
+    }
+    for k in 0..3 * n {
+        jdp[k] = j2p[k] - j1p[k];
+    }
+    if rot {
+        for k in 0..3 * n {
+            jdr[k] = j2r[k] - j1r[k];
+        }
+    }
+    n
+}
+
+/// Copies tendon i's Jacobian row into `jacobian` (dense: nv values; sparse: its nonzeros, with
+/// their dofs in `chain`); returns the sparse length (0 when dense).
+fn tendon_row(m: &Model, d: &Data, i: usize, jacobian: &mut [f64], chain: &mut [i32]) -> usize {
+    let nv = m.raw.nv as usize;
+    if is_sparse(m) {
+        let (adr, n) = (d.ten_J_rowadr[i] as usize, d.ten_J_rownnz[i] as usize);
+        jacobian[..n].copy_from_slice(&d.ten_J[adr..adr + n]);
+        chain[..n].copy_from_slice(&d.ten_J_colind[adr..adr + n]);
+        n
+    } else {
+        jacobian[..nv].copy_from_slice(&d.ten_J[i * nv..(i + 1) * nv]);
+        0
+    }
+}
+
 /// Equality rows: connect (3), weld (6), joint or tendon coupling (1).
 fn equality(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> {
     let nv = m.raw.nv as usize;
     if disabled(m, mjtDisableBit_::mjDSBL_EQUALITY) || m.raw.nemax == 0 {
         return Ok(());
     }
+    let sparse = is_sparse(m);
     let j0 = a.alloc(6 * nv)?;
     let j1 = a.alloc(6 * nv)?;
+    let jd = a.alloc(6 * nv)?;
+    let chain = a.alloc_int(nv)?;
+    let chain2 = a.alloc_int(nv)?;
+    let buf_ind = a.alloc_int(nv)?;
+    let buf = a.alloc(nv)?;
     for i in 0..m.raw.neq as usize {
         if m.eq_active()[i] == 0 {
             continue;
         }
-        let data = &m.eq_data()[mjNEQDATA as usize * i..mjNEQDATA as usize * (i + 1)];
+        let data = &m.eq_data()[mjNEQDATA * i..mjNEQDATA * (i + 1)];
         let id = [m.eq_obj1id()[i], m.eq_obj2id()[i]];
         let mut cpos = [0.0; 6];
         let size;
+        let mut n;
         match m.eq_type()[i] {
             EQ_CONNECT | EQ_WELD => {
                 let weld = m.eq_type()[i] == EQ_WELD;
@@ -131,33 +496,23 @@ fn equality(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> {
                 }
                 cpos[..3].copy_from_slice(&sub3(&pos[0], &pos[1]));
                 let (b0, b1) = (id[0] as usize, id[1] as usize);
-                let (j0p, j0r) = j0.split_at_mut(3 * nv);
-                let (j1p, j1r) = j1.split_at_mut(3 * nv);
-                let (r1, r0) = if weld {
-                    (Some(j1r), Some(j0r))
-                } else {
-                    (None, None)
-                };
-                jac(m, d.cdof, d.subtree_com, &pos[1], b1, Some(j1p), r1);
-                jac(m, d.cdof, d.subtree_com, &pos[0], b0, Some(j0p), r0);
-                let n = if weld { 6 * nv } else { 3 * nv };
-                for k in 0..n {
-                    j0[k] -= j1[k];
-                }
+                n = jac_dif_pair(m, d, chain, b1, b0, &pos[1], &pos[0], j1, j0, jd, weld);
+                j0[..3 * n].copy_from_slice(&jd[..3 * n]);
                 if weld {
+                    j0[3 * n..6 * n].copy_from_slice(&jd[3 * nv..3 * nv + 3 * n]);
                     let q = mul_quat(&q4(&d.xquat[4 * b0..]), &q4(&data[6..]));
                     let q1 = neg_quat(&q4(&d.xquat[4 * b1..]));
                     let q2 = mul_quat(&q1, &q);
                     cpos[3..].copy_from_slice(&q2[1..]);
-                    for k in 0..nv {
-                        let axis = [j0[3 * nv + k], j0[4 * nv + k], j0[5 * nv + k]];
+                    for k in 0..n {
+                        let axis = [j0[3 * n + k], j0[4 * n + k], j0[5 * n + k]];
                         let q3 = mul_quat(&mul_quat_axis(&q1, &axis), &q);
-                        j0[3 * nv + k] = 0.5 * q3[1];
-                        j0[4 * nv + k] = 0.5 * q3[2];
-                        j0[5 * nv + k] = 0.5 * q3[3];
+                        j0[3 * n + k] = 0.5 * q3[1];
+                        j0[4 * n + k] = 0.5 * q3[2];
+                        j0[5 * n + k] = 0.5 * q3[3];
                     }
                     let torquescale = data[10];
-                    for x in &mut j0[3 * nv..6 * nv] {
+                    for x in &mut j0[3 * n..6 * n] {
                         *x *= torquescale;
                     }
                     size = 6;
@@ -165,25 +520,36 @@ fn equality(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> {
                     size = 3;
                 }
             }
-            t @ (EQ_JOINT | EQ_TENDON) => {
+            EQ_JOINT | EQ_TENDON => {
+                let joint = m.eq_type()[i] == EQ_JOINT;
                 let mut pos = [0.0; 2];
                 let mut refpos = [0.0; 2];
                 let nobj = if id[1] >= 0 { 2 } else { 1 };
+                let mut nnz = [0usize; 2];
                 for k in 0..nobj {
-                    let jn = id[k] as usize;
+                    let ob = id[k] as usize;
                     let jk = if k == 0 { &mut *j0 } else { &mut *j1 };
-                    if t == EQ_TENDON {
-                        pos[k] = d.ten_length[jn];
-                        refpos[k] = m.tendon_length0()[jn];
-                        jk[..nv].copy_from_slice(&d.ten_J[jn * nv..(jn + 1) * nv]);
-                        continue;
+                    let ck = if k == 0 { &mut *chain } else { &mut *chain2 };
+                    if joint {
+                        let qadr = m.jnt_qposadr()[ob] as usize;
+                        let dof = m.jnt_dofadr()[ob];
+                        pos[k] = d.qpos[qadr];
+                        refpos[k] = m.qpos0()[qadr];
+                        if sparse {
+                            nnz[k] = 1;
+                            ck[0] = dof;
+                            jk[0] = 1.0;
+                        } else {
+                            jk[..nv].fill(0.0);
+                            jk[dof as usize] = 1.0;
+                        }
+                    } else {
+                        pos[k] = d.ten_length[ob];
+                        refpos[k] = m.tendon_length0()[ob];
+                        nnz[k] = tendon_row(m, d, ob, jk, ck);
                     }
-                    let qadr = m.jnt_qposadr()[jn] as usize;
-                    pos[k] = d.qpos[qadr];
-                    refpos[k] = m.qpos0()[qadr];
-                    jk[..nv].fill(0.0);
-                    jk[m.jnt_dofadr()[jn] as usize] = 1.0;
                 }
+                n = nnz[0];
                 if nobj == 2 {
                     let dif = pos[1] - refpos[1];
                     cpos[0] = pos[0]
@@ -197,7 +563,13 @@ fn equality(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> {
                         + 2.0 * data[2] * dif
                         + 3.0 * data[3] * dif * dif
                         + 4.0 * data[4] * dif * dif * dif;
-                    add_to_scl(&mut j0[..nv], &j1[..nv], -deriv);
+                    if sparse {
+                        n = combine_sparse(
+                            j0, j1, nv, 1.0, -deriv, nnz[0], nnz[1], chain, chain2, buf, buf_ind,
+                        );
+                    } else {
+                        add_to_scl(&mut j0[..nv], &j1[..nv], -deriv);
+                    }
                 } else {
                     cpos[0] = pos[0] - refpos[0] - data[0];
                 }
@@ -210,36 +582,45 @@ fn equality(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> {
             }
             t => return Err(EngineError(format!("Invalid equality constraint type {t}"))),
         }
-        if !add_rows(m, d, j0, Some(&cpos), None, 0.0, size, EQUALITY, i)? {
+        let ch = if sparse { Some(&chain[..n]) } else { None };
+        if !add_rows(m, d, j0, ch, Some(&cpos), None, 0.0, size, EQUALITY, i)? {
             break;
         }
     }
     Ok(())
 }
 
-/// Dry-friction rows of dofs and tendons.
+/// Dry-friction rows of dofs (tendon friction is not implemented).
 fn friction(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> {
     let nv = m.raw.nv as usize;
     if disabled(m, mjtDisableBit_::mjDSBL_FRICTIONLOSS) {
         return Ok(());
     }
+    let sparse = is_sparse(m);
     let j = a.alloc(nv)?;
     for i in 0..nv {
         let f = m.dof_frictionloss()[i];
         if f > 0.0 {
-            j.fill(0.0);
-            j[i] = 1.0;
-            if !add_rows(m, d, j, None, None, f, 1, FRICTION_DOF, i)? {
+            if sparse {
+                j[0] = 1.0;
+            } else {
+                j.fill(0.0);
+                j[i] = 1.0;
+            }
+            let ch = [i as i32];
+            let ch = if sparse { Some(&ch[..]) } else { None };
+            if !add_rows(m, d, j, ch, None, None, f, 1, FRICTION_DOF, i)? {
                 break;
             }
         }
     }
+    let chain = a.alloc_int(nv)?;
     for i in 0..m.raw.ntendon as usize {
         let f = m.tendon_frictionloss()[i];
         if f > 0.0 {
-            let row = &d.ten_J[i * nv..(i + 1) * nv];
-            j.copy_from_slice(row);
-            if !add_rows(m, d, j, None, None, f, 1, FRICTION_TENDON, i)? {
+            let n = tendon_row(m, d, i, j, chain);
+            let ch = if sparse { Some(&chain[..n]) } else { None };
+            if !add_rows(m, d, j, ch, None, None, f, 1, FRICTION_TENDON, i)? {
                 break;
             }
         }
@@ -247,12 +628,13 @@ fn friction(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> {
     Ok(())
 }
 
-/// Joint- and tendon-limit rows.
+/// Joint-limit rows (tendon limits are not implemented).
 fn limits(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> {
     let nv = m.raw.nv as usize;
     if disabled(m, mjtDisableBit_::mjDSBL_LIMIT) {
         return Ok(());
     }
+    let sparse = is_sparse(m);
     let j = a.alloc(nv)?;
     for i in 0..m.raw.njnt as usize {
         if m.jnt_limited()[i] == 0 {
@@ -268,19 +650,17 @@ fn limits(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> {
                     let lim = m.jnt_range()[2 * i + (side > 0.0) as usize];
                     let dist = side * (lim - value);
                     if dist < margin {
-                        j.fill(0.0);
-                        j[dofadr] = -side;
-                        if !add_rows(
-                            m,
-                            d,
-                            j,
-                            Some(&[dist]),
-                            Some(&[margin]),
-                            0.0,
-                            1,
-                            LIMIT_JOINT,
-                            i,
-                        )? {
+                        let ch = [dofadr as i32];
+                        let ch = if sparse {
+                            j[0] = -side;
+                            Some(&ch[..])
+                        } else {
+                            j.fill(0.0);
+                            j[dofadr] = -side;
+                            None
+                        };
+                        let (p, mg) = ([dist], [margin]);
+                        if !add_rows(m, d, j, ch, Some(&p), Some(&mg), 0.0, 1, LIMIT_JOINT, i)? {
                             // 2.2.2 leaves only the side loop here
                             break;
                         }
@@ -291,19 +671,18 @@ fn limits(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> {
                 let (axis, value) = normalize3(&quat2vel(&q4(&d.qpos[qadr..]), 1.0));
                 let dist = max(m.jnt_range()[2 * i], m.jnt_range()[2 * i + 1]) - value;
                 if dist < margin {
-                    j.fill(0.0);
-                    j[dofadr..dofadr + 3].copy_from_slice(&scl3(&axis, -1.0));
-                    if !add_rows(
-                        m,
-                        d,
-                        j,
-                        Some(&[dist]),
-                        Some(&[margin]),
-                        0.0,
-                        1,
-                        LIMIT_JOINT,
-                        i,
-                    )? {
+                    let a0 = dofadr as i32;
+                    let ch = [a0, a0 + 1, a0 + 2];
+                    let ch = if sparse {
+                        j[..3].copy_from_slice(&scl3(&axis, -1.0));
+                        Some(&ch[..])
+                    } else {
+                        j.fill(0.0);
+                        j[dofadr..dofadr + 3].copy_from_slice(&scl3(&axis, -1.0));
+                        None
+                    };
+                    let (p, mg) = ([dist], [margin]);
+                    if !add_rows(m, d, j, ch, Some(&p), Some(&mg), 0.0, 1, LIMIT_JOINT, i)? {
                         break;
                     }
                 }
@@ -311,6 +690,7 @@ fn limits(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> {
             _ => {}
         }
     }
+    let chain = a.alloc_int(nv)?;
     for i in 0..m.raw.ntendon as usize {
         if m.tendon_limited()[i] == 0 {
             continue;
@@ -318,13 +698,17 @@ fn limits(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> {
         let value = d.ten_length[i];
         let margin = m.tendon_margin()[i];
         for side in [-1.0f64, 1.0] {
-            let dist = side * (m.tendon_range()[2 * i + (side > 0.0) as usize] - value);
+            let lim = m.tendon_range()[2 * i + (side > 0.0) as usize];
+            let dist = side * (lim - value);
             if dist < margin {
-                for (x, &t) in j.iter_mut().zip(&d.ten_J[i * nv..(i + 1) * nv]) {
-                    *x = t * -side;
+                let n = tendon_row(m, d, i, j, chain);
+                let len = if sparse { n } else { nv };
+                for x in &mut j[..len] {
+                    *x *= -side;
                 }
-                let (pos, mrg) = ([dist], [margin]);
-                if !add_rows(m, d, j, Some(&pos), Some(&mrg), 0.0, 1, LIMIT_TENDON, i)? {
+                let ch = if sparse { Some(&chain[..n]) } else { None };
+                let (p, mg) = ([dist], [margin]);
+                if !add_rows(m, d, j, ch, Some(&p), Some(&mg), 0.0, 1, LIMIT_TENDON, i)? {
                     break;
                 }
             }
@@ -337,6 +721,7 @@ fn limits(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> {
 fn diag_approx(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     let iw = m.body_invweight0();
     let dw = m.dof_invweight0();
+    let tw = m.tendon_invweight0();
     for i in 0..d.raw.nefc as usize {
         let id = d.efc_id[i] as usize;
         d.efc_diagApprox[i] = match d.efc_type[i] {
@@ -356,7 +741,6 @@ fn diag_approx(m: &Model, d: &mut Data) -> Result<(), EngineError> {
                     v
                 }
                 EQ_TENDON => {
-                    let tw = m.tendon_invweight0();
                     let mut v = tw[m.eq_obj1id()[id] as usize];
                     let o2 = m.eq_obj2id()[id];
                     if o2 >= 0 {
@@ -368,7 +752,7 @@ fn diag_approx(m: &Model, d: &mut Data) -> Result<(), EngineError> {
             },
             FRICTION_DOF => dw[id],
             LIMIT_JOINT => dw[m.jnt_dofadr()[id] as usize],
-            FRICTION_TENDON | LIMIT_TENDON => m.tendon_invweight0()[id],
+            FRICTION_TENDON | LIMIT_TENDON => tw[id],
             _ => return Err(not_implemented("this constraint type is")),
         };
     }
@@ -394,16 +778,12 @@ fn sol_params(m: &Model, d: &Data, i: usize) -> ([f64; 2], [f64; 5]) {
     if !disabled(m, mjtDisableBit_::mjDSBL_REFSAFE) && solref[0] > 0.0 {
         solref[0] = max(solref[0], 2.0 * m.raw.opt.timestep);
     }
-    solimp[0] = min_c(MAXIMP, max(MINIMP, solimp[0]));
-    solimp[1] = min_c(MAXIMP, max(MINIMP, solimp[1]));
+    solimp[0] = min(MAXIMP, max(MINIMP, solimp[0]));
+    solimp[1] = min(MAXIMP, max(MINIMP, solimp[1]));
     solimp[2] = max(0.0, solimp[2]);
-    solimp[3] = min_c(MAXIMP, max(MINIMP, solimp[3]));
+    solimp[3] = min(MAXIMP, max(MINIMP, solimp[3]));
     solimp[4] = max(1.0, solimp[4]);
     (solref, solimp)
-}
-
-fn min_c(a: f64, b: f64) -> f64 {
-    crate::math::misc::min(a, b)
 }
 
 /// Impedance and its derivative at distance `pos` (with margin) for `solimp`.
@@ -445,7 +825,7 @@ fn pos_dim(m: &Model, d: &Data, i: usize) -> (f64, usize) {
     if d.efc_type[i] == EQUALITY {
         match m.eq_type()[id] {
             EQ_WELD => {
-                let ratio = m.eq_data()[mjNEQDATA as usize * id + 10];
+                let ratio = m.eq_data()[mjNEQDATA * id + 10];
                 let mut p = [0.0; 6];
                 p[..3].copy_from_slice(&d.efc_pos[i..i + 3]);
                 for k in 3..6 {
@@ -501,7 +881,8 @@ fn make_impedance(m: &Model, d: &mut Data) {
     }
 }
 
-/// Runs `f` with a scratch arena taken from `d` (released afterwards).
+/// Runs `f` with a scratch arena taken from `d` (released afterwards); inside `f`, `d.arena`
+/// is empty, so scratch must come from the arena argument.
 pub fn with_arena<R>(d: &mut Data, f: impl FnOnce(&mut Data, &mut Arena) -> R) -> R {
     let mut arena = std::mem::replace(&mut d.arena, Arena::over(&mut []));
     let r = arena.scope(|a| f(d, a));
@@ -531,26 +912,52 @@ pub fn make_constraint(m: &Model, d: &mut Data) -> Result<(), EngineError> {
         return Ok(());
     }
     if is_sparse(m) {
-        return Err(not_implemented("the sparse constraint Jacobian is"));
+        let (nefc, nv) = (d.raw.nefc as usize, m.raw.nv as usize);
+        transpose_sparse(
+            d.efc_JT,
+            d.efc_J,
+            nefc,
+            nv,
+            d.efc_JT_rownnz,
+            d.efc_JT_rowadr,
+            d.efc_JT_colind,
+            d.efc_J_rownnz,
+            d.efc_J_rowadr,
+            d.efc_J_colind,
+        );
+        super_sparse(
+            nefc,
+            d.efc_J_rowsuper,
+            d.efc_J_rownnz,
+            d.efc_J_rowadr,
+            d.efc_J_colind,
+        );
+        super_sparse(
+            nv,
+            d.efc_JT_rowsuper,
+            d.efc_JT_rownnz,
+            d.efc_JT_rowadr,
+            d.efc_JT_colind,
+        );
     }
     diag_approx(m, d)?;
     make_impedance(m, d);
     Ok(())
 }
 
-/// efc_AR = J M^-1 J' + diag(R) for dual solvers (mj_projectConstraint, dense).
+/// efc_AR = J M^-1 J' + diag(R) for dual solvers (mj_projectConstraint).
 pub fn project_constraint(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     let nefc = d.raw.nefc as usize;
     let nv = m.raw.nv as usize;
     if nefc == 0 || !is_dual(m) {
         return Ok(());
     }
-    if is_sparse(m) {
-        return Err(not_implemented("the sparse constraint Jacobian is"));
-    }
     with_arena(d, |d, a| -> Result<(), EngineError> {
         let jm2 = a.alloc(nefc * nv)?;
         let jm2t = a.alloc(nv * nefc)?;
+        if is_sparse(m) {
+            return project_sparse(m, d, a, jm2, jm2t);
+        }
         solve_m2(m, jm2, d.efc_J, nefc, d.qLD, d.qLDiagSqrtInv);
         transpose(jm2t, jm2, nefc, nv);
         sqr_mat_td(d.efc_AR, jm2t, None, nv, nefc);
@@ -561,10 +968,136 @@ pub fn project_constraint(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     })
 }
 
+/// Sparse projection: rows of J completed to full dof chains, back-substituted through L'.
+fn project_sparse(
+    m: &Model,
+    d: &mut Data,
+    a: &mut Arena,
+    jm2: &mut [f64],
+    jm2t: &mut [f64],
+) -> Result<(), EngineError> {
+    let nefc = d.raw.nefc as usize;
+    let nv = m.raw.nv as usize;
+    let rownnz = a.alloc_int(nefc)?;
+    let rowadr = a.alloc_int(nefc)?;
+    let colind = a.alloc_int(nefc * nv)?;
+    let rowsuper = a.alloc_int(nefc)?;
+    let rownnz_t = a.alloc_int(nv)?;
+    let rowadr_t = a.alloc_int(nv)?;
+    let colind_t = a.alloc_int(nv * nefc)?;
+    let rowsuper_t = a.alloc_int(nv)?;
+    let parent = m.dof_parentid();
+    for r in 0..nefc {
+        let adr = if r > 0 {
+            (rowadr[r - 1] + rownnz[r - 1]) as usize
+        } else {
+            0
+        };
+        let (jadr, mut remain) = (d.efc_J_rowadr[r] as usize, d.efc_J_rownnz[r] as usize);
+        let mut nnz = 0;
+        loop {
+            rownnz[r] = nnz as i32;
+            rowadr[r] = adr as i32;
+            let prev_src = if remain > 0 {
+                d.efc_J_colind[jadr + remain - 1]
+            } else {
+                -1
+            };
+            let prev_dst = if nnz > 0 {
+                parent[colind[adr + nnz - 1] as usize]
+            } else {
+                -1
+            };
+            if prev_src < 0 && prev_dst < 0 {
+                break;
+            }
+            if prev_src >= prev_dst {
+                colind[adr + nnz] = prev_src;
+                jm2[adr + nnz] = d.efc_J[jadr + remain - 1];
+                remain -= 1;
+            } else {
+                colind[adr + nnz] = prev_dst;
+                jm2[adr + nnz] = 0.0;
+            }
+            nnz += 1;
+        }
+        colind[adr..adr + nnz].reverse();
+        jm2[adr..adr + nnz].reverse();
+        for i in (0..nnz).rev() {
+            let xi = jm2[adr + i];
+            let mut pi = i;
+            if xi != 0.0 {
+                let c = colind[adr + i] as usize;
+                jm2[adr + i] *= d.qLDiagSqrtInv[c];
+                let mut madr = m.dof_Madr()[c] as usize + 1;
+                let mut j = parent[c];
+                while j >= 0 {
+                    while colind[adr + pi] > j {
+                        pi -= 1;
+                    }
+                    jm2[adr + pi] -= d.qLD[madr] * xi;
+                    madr += 1;
+                    j = parent[j as usize];
+                }
+            }
+        }
+    }
+    transpose_sparse(
+        jm2t, jm2, nefc, nv, rownnz_t, rowadr_t, colind_t, rownnz, rowadr, colind,
+    );
+    super_sparse(nefc, rowsuper, rownnz, rowadr, colind);
+    super_sparse(nv, rowsuper_t, rownnz_t, rowadr_t, colind_t);
+    let chain = a.alloc_int(2 * nefc)?;
+    let buffer = a.alloc(nefc)?;
+    let pat_t = SparseRef {
+        rownnz: rownnz_t,
+        rowadr: rowadr_t,
+        colind: colind_t,
+        rowsuper: Some(rowsuper_t),
+    };
+    let pat = SparseRef {
+        rownnz,
+        rowadr,
+        colind,
+        rowsuper: Some(rowsuper),
+    };
+    sqr_mat_td_sparse(
+        d.efc_AR,
+        jm2t,
+        jm2,
+        None,
+        nefc,
+        d.efc_AR_rownnz,
+        d.efc_AR_rowadr,
+        d.efc_AR_colind,
+        &pat_t,
+        &pat,
+        chain,
+        buffer,
+    );
+    compress_sparse(
+        d.efc_AR,
+        nefc,
+        d.efc_AR_rownnz,
+        d.efc_AR_rowadr,
+        d.efc_AR_colind,
+    );
+    for i in 0..nefc {
+        let adr = d.efc_AR_rowadr[i] as usize;
+        for k in adr..adr + d.efc_AR_rownnz[i] as usize {
+            if d.efc_AR_colind[k] == i as i32 {
+                d.efc_AR[k] += d.efc_R[i];
+                break;
+            }
+        }
+    }
+    Ok(())
+}
+
 /// efc_vel and efc_aref (mj_referenceConstraint).
 pub fn reference_constraint(m: &Model, d: &mut Data) {
     let nefc = d.raw.nefc as usize;
-    mul_jac_vec(m, nefc, d.efc_J, d.efc_vel, d.qvel);
+    jac_view!(m, d).mul_vec(d.efc_vel, d.qvel);
     for i in 0..nefc {
         let k = &d.efc_KBIP[4 * i..4 * i + 4];
         d.efc_aref[i] = -k[1] * d.efc_vel[i] - k[0] * k[2] * (d.efc_pos[i] - d.efc_margin[i]);
@@ -632,6 +1165,6 @@ pub fn constraint_update(
             state[i] = mjCNSTRSTATE_QUADRATIC as i32;
         }
     }
-    mul_jac_t_vec(m, nefc, d.efc_J, d.qfrc_constraint, d.efc_force);
+    jac_view!(m, d).mul_t_vec(d.qfrc_constraint, d.efc_force);
     Ok(s)
 }

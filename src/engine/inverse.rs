@@ -11,7 +11,7 @@ use super::rne::rne_with;
 use super::sensor::{sensor_acc, sensor_pos, sensor_vel};
 use super::support::{energy_pos, energy_vel};
 use super::transmission::transmission;
-use super::{enabled, not_implemented, tick, Data, EngineError, Model};
+use super::{enabled, tick, Data, EngineError, Model};
 use crate::abi::*;
 use mjtTimer_::*;
 
@@ -42,13 +42,19 @@ pub fn inv_velocity(m: &Model, d: &mut Data) -> Result<(), EngineError> {
 
 /// Constraint forces that produce qacc (mj_invConstraint); zero without constraints.
 pub fn inv_constraint(m: &Model, d: &mut Data) -> Result<(), EngineError> {
-    let _ = m;
-    if d.raw.nefc != 0 {
-        return Err(not_implemented(
-            "inverse constraint forces (mj_invConstraint with active constraints) are",
-        ));
+    let nefc = d.raw.nefc as usize;
+    if nefc == 0 {
+        d.qfrc_constraint.fill(0.0);
+    } else {
+        super::constraint::with_arena(d, |d, a| -> Result<(), EngineError> {
+            let jar = a.alloc(nefc)?;
+            super::constraint::jac_view!(m, d).mul_vec(jar, d.qacc);
+            for i in 0..nefc {
+                jar[i] -= d.efc_aref[i];
+            }
+            super::constraint::constraint_update(m, d, jar, false).map(|_| ())
+        })?;
     }
-    d.qfrc_constraint.fill(0.0);
     tick(d, mjTIMER_CONSTRAINT);
     Ok(())
 }

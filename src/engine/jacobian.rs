@@ -2,6 +2,7 @@
 
 use super::linalg::{add_to_scl, row};
 use super::{Data, EngineError, Model};
+use crate::abi::view::Arena;
 use crate::math::*;
 
 /// Jacobian rows (3 x nv each) of a global point attached to `body` (mj_jac):
@@ -271,6 +272,19 @@ pub fn add_m_sparse(
     rowadr: &[i32],
     colind: &mut [i32],
 ) -> Result<(), EngineError> {
+    add_m_sparse_with(m, d.qM, &mut d.arena, dst, rownnz, rowadr, colind)
+}
+
+/// `add_m_sparse` for a given qM, with scratch from `arena`.
+pub fn add_m_sparse_with(
+    m: &Model,
+    qm: &[f64],
+    arena: &mut Arena,
+    dst: &mut [f64],
+    rownnz: &mut [i32],
+    rowadr: &[i32],
+    colind: &mut [i32],
+) -> Result<(), EngineError> {
     let nv = m.raw.nv as usize;
     let madr = m.dof_Madr();
     let simple = m.dof_simplenum();
@@ -283,12 +297,12 @@ pub fn add_m_sparse(
         let adr = rowadr[i] as usize;
         if rownnz[i] == 0 {
             colind[adr] = i as i32;
-            dst[adr] = d.qM[madr[i] as usize];
+            dst[adr] = qm[madr[i] as usize];
             rownnz[i] = 1;
         } else {
             let end = adr + rownnz[i] as usize;
             match (adr..end).find(|&k| colind[k] == i as i32) {
-                Some(k) => dst[k] += d.qM[madr[i] as usize],
+                Some(k) => dst[k] += qm[madr[i] as usize],
                 None => {
                     return Err(EngineError(
                         "mj_addM sparse: dst row expected to be empty".into(),
@@ -300,8 +314,7 @@ pub fn add_m_sparse(
     if nsimple == nv {
         return Ok(());
     }
-    let qm = &*d.qM;
-    d.arena.scope(|a| -> Result<(), EngineError> {
+    arena.scope(|a| -> Result<(), EngineError> {
         let mat = a.alloc(nv * nv)?;
         let mcol = a.alloc_int(nv * nv)?;
         let mnnz = a.alloc_int(nv)?;

@@ -431,12 +431,6 @@ fn keyframes_text(o: &mut String, mv: Model, fmt: &dyn NumberWriter) {
     }
 }
 
-/// True when constraint Jacobians are stored sparse (`mj_isSparse`).
-pub fn is_sparse(m: &mjModel) -> bool {
-    m.opt.jacobian == mjtJacobian::mjJAC_SPARSE as i32
-        || (m.opt.jacobian == mjtJacobian::mjJAC_AUTO as i32 && m.nv >= 60)
-}
-
 /// Dense nv x nv matrix from the tree-sparse storage of qM or qLD.
 fn tree_to_dense(mv: Model, packed: &[f64]) -> Vec<f64> {
     let nv = mv.raw.nv.max(0) as usize;
@@ -662,7 +656,7 @@ pub fn data_text(mv: Model, d: &view::Data, fmt: &dyn NumberWriter) -> String {
     p.array("CDOF", nv, 6, d.cdof);
     p.array("CINERT", nbody, 10, d.cinert);
     p.array("TEN_LENGTH", ntendon, 1, d.ten_length);
-    let sparse = is_sparse(m);
+    let sparse = super::jacdif::is_sparse(&mv);
     if !sparse {
         p.array("TEN_MOMENT", ntendon, nv, d.ten_J);
     } else {

@@ -1,14 +1,19 @@
-//! Constraint solvers (dense Jacobian): warm start, projected Gauss-Seidel in the dual, and the
-//! primal conjugate-gradient and Newton methods with their exact line search (mj_fwdConstraint).
+//! Constraint solvers (mj_fwdConstraint), dense or sparse: warm start, projected Gauss-Seidel
+//! and noslip in the dual, and the primal conjugate-gradient and Newton methods with their exact
+//! line search. Contact (cone) rows are not handled: they error before reaching a solver.
 
-use super::constraint::{constraint_update, is_sparse, mul_jac_t_vec, mul_jac_vec, with_arena};
+use super::constraint::{constraint_update, is_sparse, jac_view, with_arena};
 use super::inertia::solve_ld;
-use super::jacobian::{add_m_dense, mul_m};
+use super::jacobian::{add_m_dense, add_m_sparse_with, mul_m};
 use super::{disabled, not_implemented, tick, Data, EngineError, Model, MINVAL};
 use crate::abi::view::Arena;
 use crate::abi::*;
 use crate::math::blas::{dot, mul_mat_vec, norm, sqr_mat_td};
 use crate::math::chol::{chol_factor, chol_solve, chol_update};
+use crate::math::chol_sparse::{chol_factor_sparse, chol_solve_sparse, chol_update_sparse};
+use crate::math::sparse::{
+    compress_sparse, dot_sparse, mul_mat_vec_sparse, sqr_mat_td_sparse, SparseRef,
+};
 use mjtConstraintState_::*;
 
 const SATISFIED: i32 = mjCNSTRSTATE_SATISFIED as i32;
@@ -37,7 +42,7 @@ fn save_stats(
 ) {
     let i = (d.raw.solver_iter + *iter) as usize;
     *iter += 1;
-    if i < mjNSOLVER as usize {
+    if i < mjNSOLVER {
         let s = &mut d.raw.solver[i];
         s.improvement = improvement;
         s.gradient = gradient;
@@ -60,13 +65,7 @@ pub fn fwd_constraint(m: &Model, d: &mut Data) -> Result<(), EngineError> {
         d.raw.solver_iter = 0;
         return Ok(());
     }
-    if is_sparse(m) {
-        return Err(not_implemented("the sparse constraint Jacobian is"));
-    }
-    if m.raw.opt.noslip_iterations > 0 {
-        return Err(not_implemented("the noslip solver is"));
-    }
-    mul_jac_vec(m, nefc, d.efc_J, d.efc_b, d.qacc_smooth);
+    jac_view!(m, d).mul_vec(d.efc_b, d.qacc_smooth);
     for i in 0..nefc {
         d.efc_b[i] -= d.efc_aref[i];
     }
@@ -84,6 +83,10 @@ pub fn fwd_constraint(m: &Model, d: &mut Data) -> Result<(), EngineError> {
         s => return Err(EngineError(format!("Unknown solver type {s}"))),
     }
     d.qacc_warmstart[..nv].copy_from_slice(&d.qacc[..nv]);
+    let noslip_iter = m.raw.opt.noslip_iterations;
+    if noslip_iter > 0 {
+        with_arena(d, |d, a| noslip(m, d, a, noslip_iter))?;
+    }
     tick(d, mjtTimer_::mjTIMER_CONSTRAINT);
     Ok(())
 }
@@ -100,7 +103,7 @@ fn warmstart(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> 
     }
     let jar = a.alloc(nefc)?;
     d.qacc.copy_from_slice(d.qacc_warmstart);
-    mul_jac_vec(m, nefc, d.efc_J, jar, d.qacc_warmstart);
+    jac_view!(m, d).mul_vec(jar, d.qacc_warmstart);
     for i in 0..nefc {
         jar[i] -= d.efc_aref[i];
     }
@@ -108,7 +111,12 @@ fn warmstart(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> 
     if m.raw.opt.solver == mjtSolver_::mjSOL_PGS as i32 {
         let mut pgs_warmstart = dot(d.efc_force, d.efc_b, nefc);
         let arf = a.alloc(nefc)?;
-        mul_mat_vec(arf, d.efc_AR, d.efc_force, nefc, nefc);
+        if is_sparse(m) {
+            let (nnz, adr, ind) = (&*d.efc_AR_rownnz, &*d.efc_AR_rowadr, &*d.efc_AR_colind);
+            mul_mat_vec_sparse(arf, d.efc_AR, d.efc_force, nefc, nnz, adr, ind);
+        } else {
+            mul_mat_vec(arf, d.efc_AR, d.efc_force, nefc, nefc);
+        }
         pgs_warmstart += 0.5 * dot(d.efc_force, arf, nefc);
         if pgs_warmstart > 0.0 {
             d.efc_force[..nefc].fill(0.0);
@@ -162,21 +170,64 @@ fn dual_state(d: &mut Data) -> Result<i32, EngineError> {
     Ok(nactive)
 }
 
+/// res = 1/diag(AR), or 1/max(MINVAL, diag(AR) - R) with `sub_r` (ARdiaginv).
+fn ar_diag_inv(d: &Data, sparse: bool, res: &mut [f64], sub_r: bool) -> Result<(), EngineError> {
+    let nefc = d.raw.nefc as usize;
+    for i in 0..nefc {
+        let k = if sparse {
+            let adr = d.efc_AR_rowadr[i] as usize;
+            let n = d.efc_AR_rownnz[i] as usize;
+            match (adr..adr + n).find(|&k| d.efc_AR_colind[k] == i as i32) {
+                Some(k) => k,
+                None => return Err(EngineError("AR has no diagonal element".into())),
+            }
+        } else {
+            i * (nefc + 1)
+        };
+        res[i] = if sub_r {
+            1.0 / crate::math::misc::max(MINVAL, d.efc_AR[k] - d.efc_R[i])
+        } else {
+            1.0 / d.efc_AR[k]
+        };
+    }
+    Ok(())
+}
+
+/// Row i of AR times efc_force.
+fn ar_row_dot(d: &Data, sparse: bool, i: usize) -> f64 {
+    let nefc = d.raw.nefc as usize;
+    if sparse {
+        let adr = d.efc_AR_rowadr[i] as usize;
+        let n = d.efc_AR_rownnz[i] as usize;
+        dot_sparse(&d.efc_AR[adr..], d.efc_force, n, &d.efc_AR_colind[adr..])
+    } else {
+        dot(&d.efc_AR[i * nefc..], d.efc_force, nefc)
+    }
+}
+
+/// qfrc_constraint = J'*force, qacc = qacc_smooth + M^-1 qfrc_constraint (dualFinish).
+fn dual_finish(m: &Model, d: &mut Data) {
+    let nv = m.raw.nv as usize;
+    jac_view!(m, d).mul_t_vec(d.qfrc_constraint, d.efc_force);
+    solve_ld(m, d.qacc, Some(d.qfrc_constraint), 1, d.qLD, d.qLDiagInv);
+    for i in 0..nv {
+        d.qacc[i] += d.qacc_smooth[i];
+    }
+}
+
 /// Projected Gauss-Seidel on the dual (mj_solPGS), scalar constraints only.
 fn pgs(m: &Model, d: &mut Data, a: &mut Arena, maxiter: i32) -> Result<(), EngineError> {
     let (ne, nf, nefc) = (d.raw.ne as usize, d.raw.nf as usize, d.raw.nefc as usize);
-    let nv = m.raw.nv as usize;
     let arinv = a.alloc(nefc)?;
     let oldstate = a.alloc_int(nefc)?;
-    for i in 0..nefc {
-        arinv[i] = 1.0 / d.efc_AR[i * (nefc + 1)];
-    }
+    let sparse = is_sparse(m);
+    ar_diag_inv(d, sparse, arinv, false)?;
     dual_state(d)?;
     let mut iter = 0;
     while iter < maxiter {
         let mut improvement = 0.0;
         for i in 0..nefc {
-            let res = d.efc_b[i] + dot(&d.efc_AR[i * nefc..], d.efc_force, nefc);
+            let res = d.efc_b[i] + ar_row_dot(d, sparse, i);
             let old = d.efc_force[i];
             let f = &mut d.efc_force[i];
             *f -= res * arinv[i];
@@ -209,12 +260,64 @@ fn pgs(m: &Model, d: &mut Data, a: &mut Arena, maxiter: i32) -> Result<(), Engin
         }
     }
     d.raw.solver_iter += iter;
-    d.raw.solver_nnz = (nefc * nefc) as i32;
-    mul_jac_t_vec(m, nefc, d.efc_J, d.qfrc_constraint, d.efc_force);
-    solve_ld(m, d.qacc, Some(d.qfrc_constraint), 1, d.qLD, d.qLDiagInv);
-    for i in 0..nv {
-        d.qacc[i] += d.qacc_smooth[i];
+    d.raw.solver_nnz = if sparse {
+        d.efc_AR_rownnz[..nefc].iter().sum()
+    } else {
+        (nefc * nefc) as i32
+    };
+    dual_finish(m, d);
+    Ok(())
+}
+
+/// Dual clean-up of friction forces with the constraint regularizer removed (mj_solNoSlip);
+/// contact friction needs contacts and is not handled.
+fn noslip(m: &Model, d: &mut Data, a: &mut Arena, maxiter: i32) -> Result<(), EngineError> {
+    let (ne, nf, nefc) = (d.raw.ne as usize, d.raw.nf as usize, d.raw.nefc as usize);
+    let sparse = is_sparse(m);
+    let arinv = a.alloc(nefc)?;
+    let oldstate = a.alloc_int(nefc)?;
+    ar_diag_inv(d, sparse, arinv, true)?;
+    dual_state(d)?;
+    if d.efc_type[ne + nf..nefc]
+        .iter()
+        .any(|&t| t >= mjtConstraint_::mjCNSTR_CONTACT_FRICTIONLESS as i32)
+    {
+        return Err(not_implemented("noslip for contacts is"));
     }
+    let mut iter = 0;
+    while iter < maxiter {
+        let mut improvement = 0.0;
+        if iter == 0 {
+            for i in 0..nefc {
+                improvement += 0.5 * d.efc_force[i] * d.efc_force[i] * d.efc_R[i];
+            }
+        }
+        for i in ne..ne + nf {
+            let mut res = d.efc_b[i] + ar_row_dot(d, sparse, i);
+            res -= d.efc_R[i] * d.efc_force[i];
+            let old = d.efc_force[i];
+            let fl = d.efc_frictionloss[i];
+            let f = &mut d.efc_force[i];
+            *f -= res * arinv[i];
+            if *f < -fl {
+                *f = -fl;
+            } else if *f > fl {
+                *f = fl;
+            }
+            let delta = *f - old;
+            improvement -= 0.5 * delta * delta / arinv[i] + delta * res;
+        }
+        oldstate.copy_from_slice(&d.efc_state[..nefc]);
+        let nactive = dual_state(d)?;
+        let nchange = (0..nefc).filter(|&i| oldstate[i] != d.efc_state[i]).count() as i32;
+        improvement = rescale(m, improvement);
+        save_stats(d, &mut iter, improvement, 0.0, 0.0, nactive, nchange, 0, 0);
+        if improvement < m.raw.opt.noslip_tolerance {
+            break;
+        }
+    }
+    d.raw.solver_iter += iter;
+    dual_finish(m, d);
     Ok(())
 }
 
@@ -232,6 +335,15 @@ struct Ctx<'b> {
     h: &'b mut [f64],
     hdiag: &'b mut [f64],
     hvec: &'b mut [f64],
+    sparse: bool,
+    nnz: usize,
+    rownnz: &'b mut [i32],
+    rowadr: &'b mut [i32],
+    colind: &'b mut [i32],
+    vec_ind: &'b mut [i32],
+    buf: &'b mut [f64],
+    buf_ind: &'b mut [i32],
+    chain: &'b mut [i32],
     cost: f64,
     quad_gauss: [f64; 3],
     nactive: i32,
@@ -274,7 +386,10 @@ fn update_gradient(m: &Model, d: &mut Data, c: &mut Ctx) {
     for i in 0..nv {
         c.grad[i] = c.ma[i] - d.qfrc_smooth[i] - d.qfrc_constraint[i];
     }
-    if c.newton {
+    if c.newton && c.sparse {
+        let (nnz, adr, ind) = (&*c.rownnz, &*c.rowadr, &*c.colind);
+        chol_solve_sparse(c.mgrad, c.h, c.grad, nv, nnz, adr, ind);
+    } else if c.newton {
         chol_solve(c.mgrad, c.h, c.grad, nv);
     } else {
         solve_ld(m, c.mgrad, Some(c.grad), 1, d.qLD, d.qLDiagInv);
@@ -368,20 +483,17 @@ fn search(m: &Model, d: &mut Data, c: &mut Ctx) -> f64 {
     const LS_MAXITER: i32 = 50;
     const LS_TOLSCL: f64 = 0.01;
     let nv = m.raw.nv as usize;
-    let nefc = d.raw.nefc as usize;
     c.ls_iter = 0;
     c.ls_slope = 1.0;
     let snorm = norm(&c.search[..nv]);
     if snorm < MINVAL {
         return 0.0;
     }
-    let scale = m.raw.stat.meaninertia * m.raw.nv.max(1) as f64;
     let gtol =
         m.raw.opt.tolerance * LS_TOLSCL * snorm * m.raw.stat.meaninertia * m.raw.nv.max(1) as f64;
     let slopescl = 1.0 / (snorm * m.raw.stat.meaninertia * m.raw.nv.max(1) as f64);
-    let _ = scale;
     mul_m(m, d.qM, c.mv, c.search);
-    mul_jac_vec(m, nefc, d.efc_J, c.jv, c.search);
+    jac_view!(m, d).mul_vec(c.jv, c.search);
     prepare(m, d, c);
     let d: &Data = d;
 
@@ -459,8 +571,8 @@ fn search(m: &Model, d: &mut Data, c: &mut Ctx) -> f64 {
     }
 }
 
-/// H = M + J'*D*J over quadratic rows, Cholesky-factorized (dense).
-fn hessian_direct(m: &Model, d: &mut Data, c: &mut Ctx) {
+/// H = M + J'*D*J over quadratic rows, Cholesky-factorized (HessianDirect).
+fn hessian_direct(m: &Model, d: &mut Data, a: &mut Arena, c: &mut Ctx) -> Result<(), EngineError> {
     let nv = m.raw.nv as usize;
     let nefc = d.raw.nefc as usize;
     for i in 0..nefc {
@@ -470,14 +582,63 @@ fn hessian_direct(m: &Model, d: &mut Data, c: &mut Ctx) {
             0.0
         };
     }
-    sqr_mat_td(c.h, d.efc_J, Some(c.hdiag), nefc, nv);
-    add_m_dense(m, d.qM, c.h);
-    chol_factor(c.h, nv, MINVAL);
+    if c.sparse {
+        let pat = SparseRef {
+            rownnz: d.efc_J_rownnz,
+            rowadr: d.efc_J_rowadr,
+            colind: d.efc_J_colind,
+            rowsuper: Some(d.efc_J_rowsuper),
+        };
+        let pat_t = SparseRef {
+            rownnz: d.efc_JT_rownnz,
+            rowadr: d.efc_JT_rowadr,
+            colind: d.efc_JT_colind,
+            rowsuper: Some(d.efc_JT_rowsuper),
+        };
+        sqr_mat_td_sparse(
+            c.h,
+            d.efc_J,
+            d.efc_JT,
+            Some(c.hdiag),
+            nv,
+            c.rownnz,
+            c.rowadr,
+            c.colind,
+            &pat,
+            &pat_t,
+            c.chain,
+            c.buf,
+        );
+        add_m_sparse_with(m, d.qM, a, c.h, c.rownnz, c.rowadr, c.colind)?;
+        let rank = chol_factor_sparse(
+            c.h, nv, MINVAL, c.rownnz, c.rowadr, c.colind, c.buf, c.buf_ind,
+        )
+        .map_err(|e| EngineError(e.into()))?;
+        if rank != nv {
+            return Err(EngineError(
+                "Rank-defficient Hessian in HessianDirect".into(),
+            ));
+        }
+        compress_sparse(c.h, nv, c.rownnz, c.rowadr, c.colind);
+        c.nnz = c.rownnz[..nv].iter().sum::<i32>() as usize;
+    } else {
+        sqr_mat_td(c.h, d.efc_J, Some(c.hdiag), nefc, nv);
+        add_m_dense(m, d.qM, c.h);
+        chol_factor(c.h, nv, MINVAL);
+        c.nnz = nv * nv;
+    }
     c.nupdate = nefc as i32;
+    Ok(())
 }
 
-/// Rank-one updates of the factor for rows whose quadratic state changed.
-fn hessian_incremental(m: &Model, d: &mut Data, c: &mut Ctx, oldstate: &[i32]) {
+/// Rank-one updates of the factor for rows whose quadratic state changed (HessianIncremental).
+fn hessian_incremental(
+    m: &Model,
+    d: &mut Data,
+    a: &mut Arena,
+    c: &mut Ctx,
+    oldstate: &[i32],
+) -> Result<(), EngineError> {
     let nv = m.raw.nv as usize;
     let nefc = d.raw.nefc as usize;
     c.nupdate = 0;
@@ -487,16 +648,28 @@ fn hessian_incremental(m: &Model, d: &mut Data, c: &mut Ctx, oldstate: &[i32]) {
             continue;
         }
         let s = d.efc_D[i].sqrt();
-        for k in 0..nv {
-            c.hvec[k] = d.efc_J[i * nv + k] * s;
-        }
-        let rank = chol_update(c.h, c.hvec, nv, is);
+        let rank = if c.sparse {
+            let (n, adr) = (d.efc_J_rownnz[i] as usize, d.efc_J_rowadr[i] as usize);
+            for k in 0..n {
+                c.hvec[k] = d.efc_J[adr + k] * s;
+            }
+            c.vec_ind[..n].copy_from_slice(&d.efc_J_colind[adr..adr + n]);
+            chol_update_sparse(
+                c.h, c.hvec, nv, is, c.rownnz, c.rowadr, c.colind, n, c.vec_ind, c.buf, c.buf_ind,
+            )
+            .map_err(|e| EngineError(e.into()))?
+        } else {
+            for k in 0..nv {
+                c.hvec[k] = d.efc_J[i * nv + k] * s;
+            }
+            chol_update(c.h, c.hvec, nv, is)
+        };
         c.nupdate += 1;
         if rank < nv {
-            hessian_direct(m, d, c);
-            return;
+            return hessian_direct(m, d, a, c);
         }
     }
+    Ok(())
 }
 
 /// Primal solver: Newton (Hessian-preconditioned) or Polak-Ribiere CG (mj_solCGNewton).
@@ -523,6 +696,15 @@ fn cg_newton(
         h: a.alloc(hn)?,
         hdiag: a.alloc(if newton { nefc } else { 0 })?,
         hvec: a.alloc(if newton { nv } else { 0 })?,
+        sparse: is_sparse(m),
+        nnz: 0,
+        rownnz: a.alloc_int(if newton { nv } else { 0 })?,
+        rowadr: a.alloc_int(if newton { nv } else { 0 })?,
+        colind: a.alloc_int(hn)?,
+        vec_ind: a.alloc_int(if newton { nv } else { 0 })?,
+        buf: a.alloc(if newton { nv } else { 0 })?,
+        buf_ind: a.alloc_int(if newton { nv } else { 0 })?,
+        chain: a.alloc_int(if newton { 2 * nv } else { 0 })?,
         cost: 0.0,
         quad_gauss: [0.0; 3],
         nactive: 0,
@@ -536,13 +718,13 @@ fn cg_newton(
     let oldstate = a.alloc_int(nefc)?;
 
     mul_m(m, d.qM, c.ma, d.qacc);
-    mul_jac_vec(m, nefc, d.efc_J, c.jaref, d.qacc);
+    jac_view!(m, d).mul_vec(c.jaref, d.qacc);
     for i in 0..nefc {
         c.jaref[i] -= d.efc_aref[i];
     }
     update_constraint(m, d, &mut c)?;
     if newton {
-        hessian_direct(m, d, &mut c);
+        hessian_direct(m, d, a, &mut c)?;
     }
     update_gradient(m, d, &mut c);
     for i in 0..nv {
@@ -570,7 +752,7 @@ fn cg_newton(
         let oldcost = c.cost;
         update_constraint(m, d, &mut c)?;
         if newton {
-            hessian_incremental(m, d, &mut c, oldstate);
+            hessian_incremental(m, d, a, &mut c, oldstate)?;
         }
         update_gradient(m, d, &mut c);
         let nchange = (0..nefc).filter(|&i| d.efc_state[i] != oldstate[i]).count() as i32;
@@ -611,6 +793,10 @@ fn cg_newton(
         }
     }
     d.raw.solver_iter += iter;
-    d.raw.solver_nnz = if newton { (nv * nv) as i32 } else { 0 };
+    d.raw.solver_nnz = match (newton, c.sparse) {
+        (false, _) => 0,
+        (true, true) => (2 * c.nnz - nv) as i32,
+        (true, false) => (nv * nv) as i32,
+    };
     Ok(())
 }
