@@ -551,51 +551,49 @@ impl BodyJac<'_> {
     }
 }
 
-fn body_jac<'s>(m: &Model, d: &mut Data<'s>, body: usize) -> Result<BodyJac<'s>, EngineError> {
-    let nv = m.raw.nv as usize;
-    let j = d.arena.alloc(6 * nv)?;
-    let tmp = d.arena.alloc(3 * nv)?;
-    let colind = d.arena.alloc_int(6 * nv)?;
-    let sparse = is_sparse(m);
-    let mut bj = BodyJac {
-        j,
-        tmp,
-        rownnz: [0; 6],
-        rowadr: [0; 6],
-        colind,
-        nnz: nv,
-        sparse,
-    };
-    if sparse {
-        let nnz = body_jac_sparse(m, body, bj.colind);
-        bj.nnz = nnz;
+impl<'s> BodyJac<'s> {
+    /// Workspace for bodies of `m`, from the arena (reused for every body).
+    fn new(m: &Model, d: &mut Data<'s>) -> Result<Self, EngineError> {
+        let nv = m.raw.nv as usize;
+        Ok(BodyJac {
+            j: d.arena.alloc(6 * nv)?,
+            tmp: d.arena.alloc(3 * nv)?,
+            rownnz: [0; 6],
+            rowadr: [0; 6],
+            colind: d.arena.alloc_int(6 * nv)?,
+            nnz: nv,
+            sparse: is_sparse(m),
+        })
+    }
+
+    /// Sets the row structure for `body` (sparse: its chain of dofs in every row).
+    fn set_body(&mut self, m: &Model, body: usize) {
+        if !self.sparse {
+            return;
+        }
+        let nnz = body_jac_sparse(m, body, self.colind);
+        self.nnz = nnz;
         for r in 0..6 {
-            bj.rownnz[r] = nnz as i32;
-            bj.rowadr[r] = (r * nnz) as i32;
+            self.rownnz[r] = nnz as i32;
+            self.rowadr[r] = (r * nnz) as i32;
         }
         // the chain stays in the first row, copies follow for the other rows
         for r in 1..6 {
             for k in 0..nnz {
-                bj.colind[r * nnz + k] = bj.colind[k];
+                self.colind[r * nnz + k] = self.colind[k];
             }
         }
     }
-    Ok(bj)
 }
 
 /// Inertia-box fluid model of body `b`: dfdv += d force / d qvel.
-fn inertia_box_fluid_vel(
-    m: &Model,
-    d: &mut Data,
-    dfdv: &mut [f64],
-    b: usize,
-) -> Result<(), EngineError> {
+fn inertia_box_fluid_vel(m: &Model, d: &Data, bj: &mut BodyJac, dfdv: &mut [f64], b: usize) {
     let nv = m.raw.nv as usize;
     let bx = inertia_box(m, b);
     let pos = v3(&d.xipos[3 * b..]);
     let mat = m9(&d.ximat[9 * b..]);
     let lvel = local_fluid_velocity(m, d, b, &pos, &mat);
-    let mut bj = body_jac(m, d, b)?;
+    bj.set_body(m, b);
     {
         let (rot, tran) = bj.j.split_at_mut(3 * nv);
         jac(m, d.cdof, d.subtree_com, &pos, b, Some(tran), Some(rot));
@@ -628,18 +626,12 @@ fn inertia_box_fluid_vel(
         let bv = -0.5 * rho * bx[0] * bx[1] * 2.0 * lvel[5].abs();
         bj.add(dfdv, &[bv], 1, 5, nv);
     }
-    Ok(())
 }
 
 /// Ellipsoid fluid model of the geoms of body `b`: dfdv += d force / d qvel.
-fn ellipsoid_fluid_vel(
-    m: &Model,
-    d: &mut Data,
-    dfdv: &mut [f64],
-    b: usize,
-) -> Result<(), EngineError> {
+fn ellipsoid_fluid_vel(m: &Model, d: &Data, bj: &mut BodyJac, dfdv: &mut [f64], b: usize) {
     let nv = m.raw.nv as usize;
-    let mut bj = body_jac(m, d, b)?;
+    bj.set_body(m, b);
     let (rho, visc) = (m.raw.opt.density, m.raw.opt.viscosity);
     let adr = m.body_geomadr()[b].max(0) as usize;
     for g in adr..adr + m.body_geomnum()[b] as usize {
@@ -668,7 +660,6 @@ fn ellipsoid_fluid_vel(
         d_added_mass(&mut bm, &lvel, rho, &c.virtual_mass, &c.virtual_inertia);
         bj.add(dfdv, &bm, 6, 0, nv);
     }
-    Ok(())
 }
 
 // ---------------------------------------------------------------- passive forces
@@ -699,14 +690,15 @@ pub fn passive_vel(m: &Model, d: &mut Data, dfdv: &mut [f64]) -> Result<(), Engi
         }
     }
     if m.raw.opt.viscosity > 0.0 || m.raw.opt.density > 0.0 {
+        let mut bj = BodyJac::new(m, d)?;
         for b in 1..m.raw.nbody as usize {
             if m.body_mass()[b] < MINVAL {
                 continue;
             }
             if uses_ellipsoid(m, b) {
-                ellipsoid_fluid_vel(m, d, dfdv, b)?;
+                ellipsoid_fluid_vel(m, d, &mut bj, dfdv, b);
             } else {
-                inertia_box_fluid_vel(m, d, dfdv, b)?;
+                inertia_box_fluid_vel(m, d, &mut bj, dfdv, b);
             }
         }
     }
