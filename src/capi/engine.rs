@@ -278,7 +278,7 @@ pub unsafe extern "C" fn mj_RungeKutta(m: *const mjModel, d: *mut mjData, N: c_i
     })
 }
 
-// 2.2.2 exports the next six symbols outside mujoco.h: `cbindgen:ignore` keeps them out of it.
+// 2.2.2 exports the next eight symbols outside mujoco.h: `cbindgen:ignore` keeps them out of it.
 
 unsafe fn ints_mut<'a>(p: *mut c_int, n: usize) -> &'a mut [i32] {
     if p.is_null() || n == 0 {
@@ -373,6 +373,28 @@ pub unsafe extern "C" fn mjd_passive_vel(m: *const mjModel, d: *mut mjData, DfDv
 #[no_mangle]
 pub unsafe extern "C" fn mjd_smooth_vel(m: *const mjModel, d: *mut mjData) {
     run("mjd_smooth_vel", (), m, d, engine::derivative::smooth_vel)
+}
+
+/// cbindgen:ignore
+#[no_mangle]
+pub unsafe extern "C" fn mjd_passive_velFD(
+    m: *const mjModel,
+    d: *mut mjData,
+    eps: mjtNum,
+    DfDv: *mut mjtNum,
+) {
+    run("mjd_passive_velFD", (), m, d, |mv, dv| {
+        let nv = mv.raw.nv.max(0) as usize;
+        engine::derivative::passive_vel_fd(mv, dv, eps, slice_mut(DfDv, nv * nv))
+    })
+}
+
+/// cbindgen:ignore
+#[no_mangle]
+pub unsafe extern "C" fn mjd_smooth_velFD(m: *const mjModel, d: *mut mjData, eps: mjtNum) {
+    run("mjd_smooth_velFD", (), m, d, |mv, dv| {
+        engine::derivative::smooth_vel_fd(mv, dv, eps)
+    })
 }
 
 #[no_mangle]

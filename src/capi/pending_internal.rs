@@ -13,12 +13,3 @@ pub unsafe extern "C" fn mj_jacDifPair(m: *const mjModel, d: *const mjData, chai
     0 as c_int
 }
 
-#[no_mangle]
-pub unsafe extern "C" fn mjd_passive_velFD(m: *const mjModel, d: *mut mjData, eps: mjtNum, DfDv: *mut mjtNum) {
-    pending("mjd_passive_velFD");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mjd_smooth_velFD(m: *const mjModel, d: *mut mjData, eps: mjtNum) {
-    pending("mjd_smooth_velFD");
-}

@@ -1,8 +1,10 @@
 //! Analytical derivatives of the smooth forces with respect to qvel (mjd_smooth_vel): actuator
 //! gains and biases, dof and tendon damping, fluid forces, and the bias forces of RNE.
 
+use super::actuation::fwd_actuation;
 use super::fluid::{ellipsoid_max_moment, geom_semi_axes, inertia_box, local_fluid_velocity};
 use super::fluid::{pow2, uses_ellipsoid, GeomFluid};
+use super::forward::fwd_velocity;
 use super::jacobian::jac;
 use super::linalg::{add_to, add_to_scl, max, min};
 use super::{disabled, Data, EngineError, Model, JNT_BALL, JNT_FREE, MINVAL};
@@ -841,4 +843,78 @@ pub fn smooth_vel(m: &Model, d: &mut Data) -> Result<(), EngineError> {
         }
     }
     Ok(())
+}
+
+/// dfdv += forward-difference d qfrc_passive / d qvel (mjd_passive_velFD); expects the
+/// velocity stage to be current.
+pub fn passive_vel_fd(
+    m: &Model,
+    d: &mut Data,
+    eps: f64,
+    dfdv: &mut [f64],
+) -> Result<(), EngineError> {
+    let nv = m.raw.nv as usize;
+    let base = d.arena.alloc(nv)?;
+    let fd = d.arena.alloc(nv)?;
+    base.copy_from_slice(&d.qfrc_passive[..nv]);
+    for i in 0..nv {
+        let save = d.qvel[i];
+        d.qvel[i] = save + eps;
+        fwd_velocity(m, d)?;
+        d.qvel[i] = save;
+        for j in 0..nv {
+            fd[j] = (d.qfrc_passive[j] - base[j]) * (1.0 / eps);
+        }
+        for j in 0..nv {
+            dfdv[j * nv + i] += fd[j];
+        }
+    }
+    fwd_velocity(m, d)
+}
+
+/// qfrc_actuator + qfrc_passive - qfrc_bias after the velocity and actuation stages.
+fn smooth_force(m: &Model, d: &mut Data, out: &mut [f64]) -> Result<(), EngineError> {
+    fwd_velocity(m, d)?;
+    fwd_actuation(m, d)?;
+    for j in 0..out.len() {
+        out[j] = d.qfrc_actuator[j] + d.qfrc_passive[j];
+    }
+    for j in 0..out.len() {
+        out[j] -= d.qfrc_bias[j];
+    }
+    Ok(())
+}
+
+/// Centered-difference approximation of smooth_vel on the D_* sparsity (mjd_smooth_velFD).
+pub fn smooth_vel_fd(m: &Model, d: &mut Data, eps: f64) -> Result<(), EngineError> {
+    let nv = m.raw.nv as usize;
+    let plus = d.arena.alloc(nv)?;
+    let minus = d.arena.alloc(nv)?;
+    let fd = d.arena.alloc(nv)?;
+    let cnt = d.arena.alloc_int(nv)?;
+    for i in 0..nv {
+        let save = d.qvel[i];
+        d.qvel[i] = save + eps;
+        smooth_force(m, d, plus)?;
+        d.qvel[i] = save - eps;
+        smooth_force(m, d, minus)?;
+        d.qvel[i] = save;
+        for j in 0..nv {
+            fd[j] = (plus[j] - minus[j]) * (0.5 / eps);
+        }
+        for j in 0..nv {
+            let adr = (d.D_rowadr[j] + cnt[j]) as usize;
+            if cnt[j] < d.D_rownnz[j] && d.D_colind[adr] == i as i32 {
+                d.qDeriv[adr] = fd[j];
+                cnt[j] += 1;
+            }
+        }
+    }
+    if (0..nv).any(|i| cnt[i] != d.D_rownnz[i]) {
+        return Err(EngineError(
+            "error in constructing FD sparse derivative".into(),
+        ));
+    }
+    fwd_velocity(m, d)?;
+    fwd_actuation(m, d)
 }
