@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstdlib>
 #include <functional>
 #include <string>
 #include <vector>
@@ -48,7 +49,12 @@ inline void drive(const mjModel* m, mjData* d, const std::vector<mjtNum>& mocap0
   }
 }
 
+// Sensor noise draws from C's rand(): both sides start from the same seed, however the
+// model was made (the reference's mj_loadXML reseeds it, a transplanted model does not).
+inline void seed_noise() { std::srand(1); }
+
 inline void reset(const mjModel* m, mjData* d) {
+  seed_noise();
   mj_resetData(m, d);
   if (m->nkey > 0) mj_resetDataKeyframe(m, d, 0);
 }
@@ -86,6 +92,7 @@ using Check = std::function<void(const mjModel*, mjData*, const Inputs&, Writer&
 
 // Prepares d at state k: reset, state copied in, and (post) the reference forward results.
 inline void at_state(const mjModel* m, mjData* d, const Inputs& in, int k, bool post) {
+  seed_noise();
   mj_resetData(m, d);
   load_state(m, d, *in.states, I(k));
   if (post) load_data(m, d, *in.post, I(k));
@@ -256,6 +263,52 @@ inline void check_names(const mjModel* m, mjData*, const Inputs&, Writer& w) {
   }
 }
 
+// Inverse dynamics at the reference's forward results: every mjData array after mj_inverse,
+// then mj_inverseSkip from the velocity stage (no sensors) for a perturbed qacc.
+inline void check_inverse(const mjModel* m, mjData* d, const Inputs& in, Writer& w) {
+  for (int k = 0; k < in.nstate; k++) {
+    at_state(m, d, in, k, true);
+    mj_inverse(m, d);
+    dump_data(m, d, w, I(k));
+    std::vector<mjtNum> v = test_vector(m->nv, k);
+    for (int i = 0; i < m->nv; i++) d->qacc[i] += v[i];
+    mj_inverseSkip(m, d, mjSTAGE_VEL, 1);
+    w.d("skip.qfrc_inverse#" + I(k), d->qfrc_inverse, m->nv);
+    w.d("skip.qfrc_constraint#" + I(k), d->qfrc_constraint, m->nv);
+  }
+}
+
+// Post-solve quantities at the reference's forward results: mj_subtreeVel,
+// mj_rnePostConstraint, and mj_objectVelocity / mj_objectAcceleration of every object with a
+// frame, global and local.
+inline void check_objects(const mjModel* m, mjData* d, const Inputs& in, Writer& w) {
+  const int types[][2] = {{mjOBJ_BODY, m->nbody}, {mjOBJ_XBODY, m->nbody}, {mjOBJ_GEOM, m->ngeom},
+                          {mjOBJ_SITE, m->nsite}, {mjOBJ_CAMERA, m->ncam}};
+  for (int k = 0; k < in.nstate; k++) {
+    at_state(m, d, in, k, true);
+    mj_subtreeVel(m, d);
+    mj_rnePostConstraint(m, d);
+    std::string i = I(k);
+    w.d("subtree_linvel#" + i, d->subtree_linvel, 3 * m->nbody);
+    w.d("subtree_angmom#" + i, d->subtree_angmom, 3 * m->nbody);
+    w.d("cacc#" + i, d->cacc, 6 * m->nbody);
+    w.d("cfrc_int#" + i, d->cfrc_int, 6 * m->nbody);
+    w.d("cfrc_ext#" + i, d->cfrc_ext, 6 * m->nbody);
+    for (const auto& t : types) {
+      for (int id = 0; id < t[1]; id++) {
+        for (int local = 0; local < 2; local++) {
+          mjtNum res[6];
+          std::string j = I(k, t[0]) + "." + I(id, local);
+          mj_objectVelocity(m, d, t[0], id, res, local);
+          w.d("objectVelocity#" + j, res, 6);
+          mj_objectAcceleration(m, d, t[0], id, res, local);
+          w.d("objectAcceleration#" + j, res, 6);
+        }
+      }
+    }
+  }
+}
+
 // Check groups that call nothing but the functions under test on the model (no mjData).
 inline bool needs_data(const std::string& group) {
   return group != "names" && group != "integratePos" && group != "differentiatePos";
@@ -280,6 +333,8 @@ inline std::vector<std::pair<std::string, Check>> state_checks() {
       {"integratePos", check_integratePos},
       {"differentiatePos", check_differentiatePos},
       {"names", check_names},
+      {"inverse", check_inverse},
+      {"objects", check_objects},
   };
 }
 

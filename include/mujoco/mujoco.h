@@ -68,6 +68,8 @@ void mj_camlight(const mjModel *m, mjData *d);
 
 void mj_tendon(const mjModel *m, mjData *d);
 
+int mj_isSparse(const mjModel *m);
+
 void mj_transmission(const mjModel *m, mjData *d);
 
 void mj_crb(const mjModel *m, mjData *d);
@@ -189,6 +191,44 @@ void mj_warning(mjData *d, int warning, int info);
 
 void mj_setConst(mjModel *m, mjData *d);
 
+void mj_subtreeVel(const mjModel *m, mjData *d);
+
+void mj_rnePostConstraint(const mjModel *m, mjData *d);
+
+void mj_objectVelocity(const mjModel *m,
+                       const mjData *d,
+                       int objtype,
+                       int objid,
+                       mjtNum *res,
+                       int flg_local);
+
+void mj_objectAcceleration(const mjModel *m,
+                           const mjData *d,
+                           int objtype,
+                           int objid,
+                           mjtNum *res,
+                           int flg_local);
+
+void mj_contactForce(const mjModel *m, const mjData *d, int id, mjtNum *result);
+
+void mj_sensorPos(const mjModel *m, mjData *d);
+
+void mj_sensorVel(const mjModel *m, mjData *d);
+
+void mj_sensorAcc(const mjModel *m, mjData *d);
+
+void mj_inverse(const mjModel *m, mjData *d);
+
+void mj_inverseSkip(const mjModel *m, mjData *d, int skipstage, int skipsensor);
+
+void mj_invPosition(const mjModel *m, mjData *d);
+
+void mj_invVelocity(const mjModel *m, mjData *d);
+
+void mj_invConstraint(const mjModel *m, mjData *d);
+
+void mj_compareFwdInv(const mjModel *m, mjData *d);
+
 void mju_error(const char *msg);
 
 void mju_warning(const char *msg);
@@ -263,10 +303,6 @@ void mj_freeLastXML(void);
 
 int mj_printSchema(const char *filename, char *buffer, int buffer_sz, int flg_html, int flg_pad);
 
-void mj_inverse(const mjModel *m, mjData *d);
-
-void mj_inverseSkip(const mjModel *m, mjData *d, int skipstage, int skipsensor);
-
 void mj_resetCallbacks(void);
 
 int mj_setLengthRange(mjModel *m,
@@ -275,24 +311,6 @@ int mj_setLengthRange(mjModel *m,
                       const mjLROpt *opt,
                       char *error,
                       int error_sz);
-
-void mj_invPosition(const mjModel *m, mjData *d);
-
-void mj_invVelocity(const mjModel *m, mjData *d);
-
-void mj_invConstraint(const mjModel *m, mjData *d);
-
-void mj_compareFwdInv(const mjModel *m, mjData *d);
-
-void mj_sensorPos(const mjModel *m, mjData *d);
-
-void mj_sensorVel(const mjModel *m, mjData *d);
-
-void mj_sensorAcc(const mjModel *m, mjData *d);
-
-void mj_subtreeVel(const mjModel *m, mjData *d);
-
-void mj_rnePostConstraint(const mjModel *m, mjData *d);
 
 void mj_makeConstraint(const mjModel *m, mjData *d);
 
@@ -310,29 +328,11 @@ int mj_addContact(const mjModel *m, mjData *d, const mjContact *con);
 
 int mj_isPyramidal(const mjModel *m);
 
-int mj_isSparse(const mjModel *m);
-
 int mj_isDual(const mjModel *m);
 
 void mj_mulJacVec(const mjModel *m, mjData *d, mjtNum *res, const mjtNum *vec);
 
 void mj_mulJacTVec(const mjModel *m, mjData *d, mjtNum *res, const mjtNum *vec);
-
-void mj_objectVelocity(const mjModel *m,
-                       const mjData *d,
-                       int objtype,
-                       int objid,
-                       mjtNum *res,
-                       int flg_local);
-
-void mj_objectAcceleration(const mjModel *m,
-                           const mjData *d,
-                           int objtype,
-                           int objid,
-                           mjtNum *res,
-                           int flg_local);
-
-void mj_contactForce(const mjModel *m, const mjData *d, int id, mjtNum *result);
 
 mjtNum mj_ray(const mjModel *m,
               const mjData *d,

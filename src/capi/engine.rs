@@ -167,7 +167,19 @@ pub unsafe extern "C" fn mj_camlight(m: *const mjModel, d: *mut mjData) {
 
 #[no_mangle]
 pub unsafe extern "C" fn mj_tendon(m: *const mjModel, d: *mut mjData) {
-    run("mj_tendon", (), m, d, |m, _d| forward::tendon(m))
+    run("mj_tendon", (), m, d, forward::tendon)
+}
+
+/// 1 when the model uses sparse Jacobians (opt.jacobian sparse, or auto with nv >= 60).
+#[no_mangle]
+pub unsafe extern "C" fn mj_isSparse(m: *const mjModel) -> c_int {
+    if m.is_null() {
+        errmem::error("mj_isSparse: NULL model");
+        return 0;
+    }
+    guard("mj_isSparse", 0, || {
+        Ok(engine::jacdif::is_sparse(&Model::new(&*m)) as c_int)
+    })
 }
 
 #[no_mangle]
@@ -942,4 +954,189 @@ pub fn set_const_views(m: &mut mjModel, d: &mut mjData) -> Result<(), EngineErro
     }
     m.stat = stat;
     Ok(())
+}
+
+/// Runs `f` on views of a model and data the C signature declares const (only read).
+unsafe fn run_const<R>(
+    name: &str,
+    fallback: R,
+    m: *const mjModel,
+    d: *const mjData,
+    f: impl FnOnce(&Model, &Data) -> Result<R, EngineError>,
+) -> R {
+    if m.is_null() || d.is_null() {
+        errmem::error(&format!("{name}: NULL model or data"));
+        return fallback;
+    }
+    guard(name, fallback, || {
+        let mv = Model::new(&*m);
+        // the view is only read: nothing is written through the const pointer
+        let dv = Data::new(&*m, &mut *(d as *mut mjData));
+        f(&mv, &dv)
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_subtreeVel(m: *const mjModel, d: *mut mjData) {
+    run("mj_subtreeVel", (), m, d, |m, d| {
+        engine::velocity::subtree_vel(m, d);
+        Ok(())
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_rnePostConstraint(m: *const mjModel, d: *mut mjData) {
+    run(
+        "mj_rnePostConstraint",
+        (),
+        m,
+        d,
+        engine::rne::rne_post_constraint,
+    )
+}
+
+/// Checks an object id against the count of its type before a frame lookup.
+fn frame_object(
+    m: &Model,
+    objtype: c_int,
+    objid: c_int,
+    caller: &str,
+) -> Result<usize, EngineError> {
+    use mjtObj_::*;
+    let n = match objtype {
+        x if x == mjOBJ_BODY as c_int || x == mjOBJ_XBODY as c_int => m.raw.nbody,
+        x if x == mjOBJ_GEOM as c_int => m.raw.ngeom,
+        x if x == mjOBJ_SITE as c_int => m.raw.nsite,
+        x if x == mjOBJ_CAMERA as c_int => m.raw.ncam,
+        _ => {
+            return Err(EngineError(format!(
+                "Invalid object type {objtype} in {caller}"
+            )))
+        }
+    };
+    if objid < 0 || objid >= n {
+        return Err(EngineError(format!(
+            "Invalid object id {objid} in {caller}"
+        )));
+    }
+    Ok(objid as usize)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_objectVelocity(
+    m: *const mjModel,
+    d: *const mjData,
+    objtype: c_int,
+    objid: c_int,
+    res: *mut mjtNum,
+    flg_local: c_int,
+) {
+    run_const("mj_objectVelocity", (), m, d, |mv, dv| {
+        let id = frame_object(mv, objtype, objid, "mj_objectVelocity")?;
+        let v = support::object_velocity(mv, dv, objtype, id, flg_local != 0)?;
+        slice_mut(res, 6).copy_from_slice(&v);
+        Ok(())
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_objectAcceleration(
+    m: *const mjModel,
+    d: *const mjData,
+    objtype: c_int,
+    objid: c_int,
+    res: *mut mjtNum,
+    flg_local: c_int,
+) {
+    run_const("mj_objectAcceleration", (), m, d, |mv, dv| {
+        let id = frame_object(mv, objtype, objid, "mj_objectAcceleration")?;
+        let v = support::object_acceleration(mv, dv, objtype, id, flg_local != 0)?;
+        slice_mut(res, 6).copy_from_slice(&v);
+        Ok(())
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_contactForce(
+    m: *const mjModel,
+    d: *const mjData,
+    id: c_int,
+    result: *mut mjtNum,
+) {
+    run_const("mj_contactForce", (), m, d, |mv, dv| {
+        let f = support::contact_force(mv, dv, id);
+        slice_mut(result, 6).copy_from_slice(&f);
+        Ok(())
+    })
+}
+
+/// A pair of standard normal samples from C's rand(), as mju_standardNormal draws them
+/// (sensor noise must consume the same random sequence as the reference).
+pub fn standard_normal() -> (f64, f64) {
+    // SAFETY: rand() has no preconditions.
+    crate::math::misc::standard_normal(|| unsafe { libc::rand() }, libc::RAND_MAX)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_sensorPos(m: *const mjModel, d: *mut mjData) {
+    run("mj_sensorPos", (), m, d, engine::sensor::sensor_pos)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_sensorVel(m: *const mjModel, d: *mut mjData) {
+    run("mj_sensorVel", (), m, d, engine::sensor::sensor_vel)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_sensorAcc(m: *const mjModel, d: *mut mjData) {
+    run("mj_sensorAcc", (), m, d, engine::sensor::sensor_acc)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_inverse(m: *const mjModel, d: *mut mjData) {
+    run("mj_inverse", (), m, d, engine::inverse::inverse)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_inverseSkip(
+    m: *const mjModel,
+    d: *mut mjData,
+    skipstage: c_int,
+    skipsensor: c_int,
+) {
+    run("mj_inverseSkip", (), m, d, |m, d| {
+        engine::inverse::inverse_skip(m, d, skipstage, skipsensor != 0)
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_invPosition(m: *const mjModel, d: *mut mjData) {
+    run("mj_invPosition", (), m, d, engine::inverse::inv_position)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_invVelocity(m: *const mjModel, d: *mut mjData) {
+    run("mj_invVelocity", (), m, d, engine::inverse::inv_velocity)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_invConstraint(m: *const mjModel, d: *mut mjData) {
+    run(
+        "mj_invConstraint",
+        (),
+        m,
+        d,
+        engine::inverse::inv_constraint,
+    )
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_compareFwdInv(m: *const mjModel, d: *mut mjData) {
+    run(
+        "mj_compareFwdInv",
+        (),
+        m,
+        d,
+        engine::inverse::compare_fwd_inv,
+    )
 }

@@ -25,16 +25,6 @@ pub unsafe extern "C" fn mj_printSchema(filename: *const c_char, buffer: *mut c_
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_inverse(m: *const mjModel, d: *mut mjData) {
-    pending("mj_inverse");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_inverseSkip(m: *const mjModel, d: *mut mjData, skipstage: c_int, skipsensor: c_int) {
-    pending("mj_inverseSkip");
-}
-
-#[no_mangle]
 pub unsafe extern "C" fn mj_resetCallbacks() {
     pending("mj_resetCallbacks");
 }
@@ -43,51 +33,6 @@ pub unsafe extern "C" fn mj_resetCallbacks() {
 pub unsafe extern "C" fn mj_setLengthRange(m: *mut mjModel, d: *mut mjData, index: c_int, opt: *const mjLROpt, error: *mut c_char, error_sz: c_int) -> c_int {
     pending("mj_setLengthRange");
     0 as c_int
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_invPosition(m: *const mjModel, d: *mut mjData) {
-    pending("mj_invPosition");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_invVelocity(m: *const mjModel, d: *mut mjData) {
-    pending("mj_invVelocity");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_invConstraint(m: *const mjModel, d: *mut mjData) {
-    pending("mj_invConstraint");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_compareFwdInv(m: *const mjModel, d: *mut mjData) {
-    pending("mj_compareFwdInv");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_sensorPos(m: *const mjModel, d: *mut mjData) {
-    pending("mj_sensorPos");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_sensorVel(m: *const mjModel, d: *mut mjData) {
-    pending("mj_sensorVel");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_sensorAcc(m: *const mjModel, d: *mut mjData) {
-    pending("mj_sensorAcc");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_subtreeVel(m: *const mjModel, d: *mut mjData) {
-    pending("mj_subtreeVel");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_rnePostConstraint(m: *const mjModel, d: *mut mjData) {
-    pending("mj_rnePostConstraint");
 }
 
 #[no_mangle]
@@ -123,12 +68,6 @@ pub unsafe extern "C" fn mj_isPyramidal(m: *const mjModel) -> c_int {
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_isSparse(m: *const mjModel) -> c_int {
-    pending("mj_isSparse");
-    0 as c_int
-}
-
-#[no_mangle]
 pub unsafe extern "C" fn mj_isDual(m: *const mjModel) -> c_int {
     pending("mj_isDual");
     0 as c_int
@@ -142,21 +81,6 @@ pub unsafe extern "C" fn mj_mulJacVec(m: *const mjModel, d: *mut mjData, res: *m
 #[no_mangle]
 pub unsafe extern "C" fn mj_mulJacTVec(m: *const mjModel, d: *mut mjData, res: *mut mjtNum, vec: *const mjtNum) {
     pending("mj_mulJacTVec");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_objectVelocity(m: *const mjModel, d: *const mjData, objtype: c_int, objid: c_int, res: *mut mjtNum, flg_local: c_int) {
-    pending("mj_objectVelocity");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_objectAcceleration(m: *const mjModel, d: *const mjData, objtype: c_int, objid: c_int, res: *mut mjtNum, flg_local: c_int) {
-    pending("mj_objectAcceleration");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_contactForce(m: *const mjModel, d: *const mjData, id: c_int, result: *mut mjtNum) {
-    pending("mj_contactForce");
 }
 
 #[no_mangle]

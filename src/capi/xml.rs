@@ -5,7 +5,7 @@ use crate::abi::view::ModelMut;
 use crate::abi::*;
 use crate::capi::errmem;
 use crate::compiler;
-use crate::xml::{reader, schema, tree};
+use crate::xml::{include, reader, schema, tree};
 use std::os::raw::{c_char, c_int};
 
 /// Copies `msg` into the caller's error buffer (truncated, NUL-terminated).
@@ -18,30 +18,32 @@ unsafe fn set_error(error: *mut c_char, error_sz: c_int, msg: &str) {
     *error.add(n) = 0;
 }
 
-/// File contents from the VFS (by exact name) or from disk.
+/// File contents from the VFS (name without its path, as mj_findFileVFS matches) or from disk.
 unsafe fn load_text(filename: &str, vfs: *const mjVFS) -> Result<Vec<u8>, String> {
     if !vfs.is_null() {
-        let v = &*vfs;
-        let n = (v.nfile.max(0) as usize).min(v.filename.len());
-        for i in 0..n {
-            let name = std::ffi::CStr::from_ptr(v.filename[i].as_ptr()).to_string_lossy();
-            if name == filename && !v.filedata[i].is_null() {
-                let size = v.filesize[i].max(0) as usize;
-                return Ok(std::slice::from_raw_parts(v.filedata[i] as *const u8, size).to_vec());
+        if let Ok(cname) = std::ffi::CString::new(filename) {
+            let id = crate::capi::io::mj_findFileVFS(vfs, cname.as_ptr());
+            let v = &*vfs;
+            if id >= 0 && (id as usize) < v.filedata.len() && !v.filedata[id as usize].is_null() {
+                let size = v.filesize[id as usize].max(0) as usize;
+                return Ok(
+                    std::slice::from_raw_parts(v.filedata[id as usize] as *const u8, size).to_vec(),
+                );
             }
         }
     }
     std::fs::read(filename).map_err(|_| {
-        format!("XML parse error 3:\nError=XML_ERROR_FILE_NOT_FOUND ErrorID=3 (0x3) Line number=0: filename={filename}\n")
+        format!(
+            "XML parse error 3:\nError=XML_ERROR_FILE_NOT_FOUND ErrorID=3 (0x3) Line number=0: filename={filename}\n"
+        )
     })
 }
 
-/// XML text to a model description.
-fn parse(bytes: &[u8]) -> Result<compiler::spec::ModelSpec, String> {
-    let text = std::str::from_utf8(bytes)
-        .map_err(|e| format!("XML parse error: invalid UTF-8 ({e})\n"))?;
-    let text = text.trim_end_matches('\0');
-    let root = tree::parse(text)?;
+/// The model file (and its includes) to a model description.
+unsafe fn parse(fname: &str, vfs: *const mjVFS) -> Result<compiler::spec::ModelSpec, String> {
+    let bytes = load_text(fname, vfs)?;
+    let text = String::from_utf8_lossy(&bytes);
+    let mut root = tree::parse(text.trim_end_matches('\0'))?;
     if root.name.eq_ignore_ascii_case("robot") {
         return Err("XML Error: URDF models are not supported by this loader yet".into());
     }
@@ -51,18 +53,14 @@ fn parse(bytes: &[u8]) -> Result<compiler::spec::ModelSpec, String> {
             root.name
         ));
     }
-    fn find_include(e: &tree::Element) -> Option<&tree::Element> {
-        if e.name == "include" {
-            return Some(e);
-        }
-        e.children.iter().find_map(find_include)
-    }
-    if let Some(inc) = find_include(&root) {
-        return Err(reader::xerr(
-            inc,
-            "'include' is not supported by this MJCF reader yet",
-        ));
-    }
+    let mut included = vec![fname.to_string()];
+    let dir = include::file_dir(fname);
+    include::expand(
+        &mut root,
+        &dir,
+        &mut |f: &str| load_text(f, vfs),
+        &mut included,
+    )?;
     schema::check(&root)?;
     reader::read(&root)
 }
@@ -77,6 +75,32 @@ unsafe extern "C" fn keep_warning(msg: *const c_char) {
     COMPILE_WARNING.with(|w| *w.borrow_mut() = text);
 }
 
+thread_local! {
+    /// Errors raised by the engine during the test step (ignored, see `test_step`).
+    static STEP_ERROR: std::cell::RefCell<String> = const { std::cell::RefCell::new(String::new()) };
+}
+
+unsafe extern "C" fn keep_error(msg: *const c_char) {
+    let text = crate::capi::errmem::cstr(msg).into_owned();
+    STEP_ERROR.with(|w| *w.borrow_mut() = text);
+}
+
+/// One step from the reset state, as 2.2.2's compiler takes: its warnings (unstable
+/// simulation, singular inertia) reach the error buffer. Engine errors are not fatal here, so a
+/// feature the engine lacks does not stop a model from loading.
+unsafe fn test_step(m: *mut mjModel) {
+    let saved = errmem::_mjPRIVATE__get_tls_error_fn();
+    errmem::_mjPRIVATE__set_tls_error_fn(Some(keep_error));
+    let d = crate::capi::io::mj_makeData(m);
+    if !d.is_null() {
+        crate::capi::io::mj_resetData(m, d);
+        crate::capi::engine::mj_step(m, d);
+        crate::capi::io::mj_deleteData(d);
+    }
+    errmem::_mjPRIVATE__set_tls_error_fn(saved);
+    STEP_ERROR.with(|w| w.borrow_mut().clear());
+}
+
 /// Parses, compiles and allocates; returns the model or the error text.
 unsafe fn load(filename: *const c_char, vfs: *const mjVFS) -> Result<*mut mjModel, String> {
     if filename.is_null() {
@@ -85,7 +109,7 @@ unsafe fn load(filename: *const c_char, vfs: *const mjVFS) -> Result<*mut mjMode
     let fname = std::ffi::CStr::from_ptr(filename)
         .to_string_lossy()
         .into_owned();
-    let spec = parse(&load_text(&fname, vfs)?)?;
+    let spec = parse(&fname, vfs)?;
     // from here on, as in 2.2.2's compiler, warnings go to the error buffer
     errmem::_mjPRIVATE__set_tls_warning_fn(Some(keep_warning));
     // SAFETY: all-zero bits are a valid mjModel header (null pointers, zero sizes).
@@ -99,11 +123,31 @@ unsafe fn load(filename: *const c_char, vfs: *const mjVFS) -> Result<*mut mjMode
         let mut mm = ModelMut::new(&mut *m);
         compiler::fill(&compiled, &mut mm);
     }
+    // 2.2.2 allocates the model's mjData before mj_setConst and fails the load if it cannot
+    match crate::abi::alloc::alloc_data(&*m) {
+        Ok(d) => crate::abi::alloc::delete_data(d),
+        Err(_) => {
+            crate::abi::alloc::delete_model(m);
+            return Err("Error: could not create mjData".into());
+        }
+    }
     if let Err(e) = compiler::set_const(&mut *m) {
         crate::abi::alloc::delete_model(m);
         return Err(format!("Error: engine error: {e}"));
     }
+    {
+        // SAFETY: as above; no other view of m is alive.
+        let mut mm = ModelMut::new(&mut *m);
+        compiler::auto_spring_damper(&compiled, &mut mm);
+    }
     compiler::finish(&compiled, &mut (*m).stat);
+    // SAFETY: m came from make_model.
+    if let Some(msg) = crate::abi::validate::validate_references(crate::abi::view::Model::new(&*m))
+    {
+        crate::abi::alloc::delete_model(m);
+        return Err(format!("Error: {msg}"));
+    }
+    test_step(m);
     Ok(m)
 }
 

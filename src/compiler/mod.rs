@@ -6,6 +6,9 @@
 pub mod frame;
 pub mod objects;
 pub mod spec;
+#[cfg(test)]
+mod tests;
+pub mod texture;
 mod tree;
 
 use crate::abi::view::{EngineError, ModelMut};
@@ -60,6 +63,12 @@ pub fn fill(c: &Compiled, m: &mut ModelMut) {
 /// Constants that depend on qpos0 (mj_setConst), computed by the engine.
 pub fn set_const(m: &mut mjModel) -> Result<(), EngineError> {
     crate::engine::setconst::set_const(m)
+}
+
+/// Joint stiffness and damping from `springdamper` (time constant, damping ratio), using the
+/// inverse weights `set_const` computed.
+pub fn auto_spring_damper(c: &Compiled, m: &mut ModelMut) {
+    c.auto_spring_damper(m);
 }
 
 /// Applies the user's `<statistic>` overrides after `set_const`.

@@ -2,7 +2,7 @@
 
 use super::actuation::fwd_actuation;
 use super::collision::collision;
-use super::constraint::make_constraint;
+use super::constraint::{make_constraint, project_constraint, reference_constraint};
 use super::inertia::{crb, factor_m, solve_ld};
 use super::integrate::{euler, implicit, runge_kutta};
 use super::jacobian::jac;
@@ -10,35 +10,22 @@ use super::kinematics::{camlight, com_pos, kinematics};
 use super::linalg::{add_to, is_bad, mul_mat_t_vec, mul_mat_vec, row};
 use super::passive::passive;
 use super::rne::rne_bias;
+use super::sensor::{sensor_acc, sensor_pos, sensor_vel};
 use super::support::{energy_pos, energy_vel, reset_data, warning};
 use super::transmission::transmission;
 use super::velocity::com_vel;
-use super::{disabled, enabled, not_implemented, tick, Data, EngineError, Model};
+use super::{enabled, tick, Data, EngineError, Model};
 use crate::abi::*;
 use mjtTimer_::*;
 
-/// Tendon lengths and moments: only the tendon-free case exists so far.
-pub fn tendon(m: &Model) -> Result<(), EngineError> {
-    if m.raw.ntendon > 0 {
-        return Err(not_implemented("tendons are"));
-    }
-    Ok(())
-}
-
-/// Sensors are not part of this slice.
-fn sensors(m: &Model) -> Result<(), EngineError> {
-    if m.raw.nsensor > 0 && !disabled(m, mjtDisableBit_::mjDSBL_SENSOR) {
-        return Err(not_implemented("sensors are"));
-    }
-    Ok(())
-}
+pub use super::tendon::tendon;
 
 /// Position-dependent stage (mj_fwdPosition).
 pub fn fwd_position(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     kinematics(m, d)?;
     com_pos(m, d)?;
     camlight(m, d, false);
-    tendon(m)?;
+    tendon(m, d)?;
     tick(d, mjTIMER_POS_KINEMATICS);
     crb(m, d, true);
     factor_m(m, d)?;
@@ -48,6 +35,7 @@ pub fn fwd_position(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     make_constraint(m, d)?;
     transmission(m, d)?;
     tick(d, mjTIMER_POS_MAKE);
+    project_constraint(m, d)?;
     tick(d, mjTIMER_POS_PROJECT);
     tick(d, mjTIMER_POSITION);
     Ok(())
@@ -56,9 +44,11 @@ pub fn fwd_position(m: &Model, d: &mut Data) -> Result<(), EngineError> {
 /// Velocity-dependent stage (mj_fwdVelocity).
 pub fn fwd_velocity(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     let (nu, nv) = (m.raw.nu as usize, m.raw.nv as usize);
+    super::tendon::tendon_velocity(m, d);
     mul_mat_vec(d.actuator_velocity, d.actuator_moment, d.qvel, nu, nv);
     com_vel(m, d);
     passive(m, d)?;
+    reference_constraint(m, d);
     rne_bias(m, d)?;
     tick(d, mjTIMER_VELOCITY);
     Ok(())
@@ -140,17 +130,9 @@ pub fn fwd_acceleration(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     Ok(())
 }
 
-/// mj_fwdConstraint without constraints: qacc = qacc_smooth.
+/// mj_fwdConstraint: the constraint solver.
 pub fn fwd_constraint(m: &Model, d: &mut Data) -> Result<(), EngineError> {
-    if d.raw.nefc != 0 {
-        return Err(not_implemented("the constraint solver is"));
-    }
-    let _ = m;
-    d.qacc.copy_from_slice(d.qacc_smooth);
-    d.qacc_warmstart.copy_from_slice(d.qacc_smooth);
-    d.qfrc_constraint.fill(0.0);
-    d.raw.solver_iter = 0;
-    Ok(())
+    super::solver::fwd_constraint(m, d)
 }
 
 /// Resets and warns when qpos has a bad value (mj_checkPos).
@@ -198,7 +180,7 @@ pub fn forward_skip(
     if skipstage < mjtStage_::mjSTAGE_POS as i32 {
         fwd_position(m, d)?;
         if !skipsensor {
-            sensors(m)?;
+            sensor_pos(m, d)?;
         }
         if energy {
             energy_pos(m, d);
@@ -207,7 +189,7 @@ pub fn forward_skip(
     if skipstage < mjtStage_::mjSTAGE_VEL as i32 {
         fwd_velocity(m, d)?;
         if !skipsensor {
-            sensors(m)?;
+            sensor_vel(m, d)?;
         }
         if energy {
             energy_vel(m, d)?;
@@ -217,7 +199,7 @@ pub fn forward_skip(
     fwd_acceleration(m, d)?;
     fwd_constraint(m, d)?;
     if !skipsensor {
-        sensors(m)?;
+        sensor_acc(m, d)?;
     }
     tick(d, mjTIMER_FORWARD);
     Ok(())
@@ -228,9 +210,9 @@ pub fn forward(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     forward_skip(m, d, mjtStage_::mjSTAGE_NONE as i32, false)
 }
 
-fn check_fwdinv(m: &Model) -> Result<(), EngineError> {
+fn check_fwdinv(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     if enabled(m, mjtEnableBit_::mjENBL_FWDINV) {
-        return Err(not_implemented("forward/inverse comparison (fwdinv) is"));
+        super::inverse::compare_fwd_inv(m, d)?;
     }
     Ok(())
 }
@@ -251,7 +233,7 @@ pub fn step_skip(
     check_vel(m, d)?;
     forward_skip(m, d, skipstage, skipsensor)?;
     check_acc(m, d)?;
-    check_fwdinv(m)?;
+    check_fwdinv(m, d)?;
     match m.raw.opt.integrator {
         x if x == mjtIntegrator_::mjINT_EULER as i32 => {
             euler(m, d, skipstage >= mjtStage_::mjSTAGE_POS as i32)?
@@ -271,10 +253,10 @@ pub fn step1(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     check_pos(m, d)?;
     check_vel(m, d)?;
     fwd_position(m, d)?;
-    sensors(m)?;
+    sensor_pos(m, d)?;
     energy_pos(m, d);
     fwd_velocity(m, d)?;
-    sensors(m)?;
+    sensor_vel(m, d)?;
     energy_vel(m, d)?;
     tick(d, mjTIMER_STEP);
     Ok(())
@@ -285,9 +267,9 @@ pub fn step2(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     fwd_actuation(m, d)?;
     fwd_acceleration(m, d)?;
     fwd_constraint(m, d)?;
-    sensors(m)?;
+    sensor_acc(m, d)?;
     check_acc(m, d)?;
-    check_fwdinv(m)?;
+    check_fwdinv(m, d)?;
     if m.raw.opt.integrator == mjtIntegrator_::mjINT_IMPLICIT as i32 {
         implicit(m, d, false)?;
     } else {

@@ -5,6 +5,7 @@ use super::{
     disabled, enabled, Data, EngineError, Model, JNT_BALL, JNT_FREE, JNT_HINGE, JNT_SLIDE,
 };
 use crate::abi::*;
+use crate::math::misc::decode_pyramid;
 use crate::math::*;
 
 /// Global pose of a frame given relative to `body` (mj_local2Global); `sameframe` 1 copies
@@ -347,4 +348,97 @@ pub fn energy_vel(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     })?;
     d.raw.energy[1] = e;
     Ok(())
+}
+
+/// Body, global position and orientation of an object with a spatial frame (body, xbody, geom,
+/// site, camera); None for other object types.
+pub fn object_frame(m: &Model, d: &Data, objtype: i32, id: usize) -> Option<(usize, Vec3, Mat3)> {
+    use mjtObj_::*;
+    let t = |o: mjtObj_| o as i32;
+    let (body, pos, mat) = match objtype {
+        x if x == t(mjOBJ_BODY) => (id, d.xipos as &[f64], d.ximat as &[f64]),
+        x if x == t(mjOBJ_XBODY) => (id, &*d.xpos, &*d.xmat),
+        x if x == t(mjOBJ_GEOM) => (m.geom_bodyid()[id] as usize, &*d.geom_xpos, &*d.geom_xmat),
+        x if x == t(mjOBJ_SITE) => (m.site_bodyid()[id] as usize, &*d.site_xpos, &*d.site_xmat),
+        x if x == t(mjOBJ_CAMERA) => (m.cam_bodyid()[id] as usize, &*d.cam_xpos, &*d.cam_xmat),
+        _ => return None,
+    };
+    Some((body, row(pos, id), row(mat, id)))
+}
+
+/// Body, position, com of its tree and optional rotation of an object for the spatial
+/// transforms of mj_objectVelocity / mj_objectAcceleration.
+fn motion_frame(
+    m: &Model,
+    d: &Data,
+    objtype: i32,
+    id: usize,
+    local: bool,
+    caller: &str,
+) -> Result<(usize, Vec3, Vec3, Option<Mat3>), EngineError> {
+    let Some((body, pos, mat)) = object_frame(m, d, objtype, id) else {
+        return Err(EngineError(format!(
+            "Invalid object type {objtype} in {caller}"
+        )));
+    };
+    let com = row(d.subtree_com, m.body_rootid()[body] as usize);
+    Ok((body, pos, com, local.then_some(mat)))
+}
+
+/// 6D velocity [rotation; translation] of an object, global or in its frame (mj_objectVelocity).
+pub fn object_velocity(
+    m: &Model,
+    d: &Data,
+    objtype: i32,
+    id: usize,
+    local: bool,
+) -> Result<Vec6, EngineError> {
+    let (body, pos, com, rot) = motion_frame(m, d, objtype, id, local, "mj_objectVelocity")?;
+    Ok(transform_spatial(
+        &row(d.cvel, body),
+        false,
+        &pos,
+        &com,
+        rot.as_ref(),
+    ))
+}
+
+/// 6D acceleration of an object, with the centripetal term of the linear part; needs `cacc`
+/// from mj_rnePostConstraint (mj_objectAcceleration).
+pub fn object_acceleration(
+    m: &Model,
+    d: &Data,
+    objtype: i32,
+    id: usize,
+    local: bool,
+) -> Result<Vec6, EngineError> {
+    let (body, pos, com, rot) = motion_frame(m, d, objtype, id, local, "mj_objectAcceleration")?;
+    let vel = transform_spatial(&row(d.cvel, body), false, &pos, &com, rot.as_ref());
+    let mut acc = transform_spatial(&row(d.cacc, body), false, &pos, &com, rot.as_ref());
+    let c = cross(&v3(&vel[..3]), &v3(&vel[3..]));
+    for k in 0..3 {
+        acc[3 + k] += c[k];
+    }
+    Ok(acc)
+}
+
+/// Force:torque of contact `id` in the contact frame; zero for an invalid or excluded contact
+/// (mj_contactForce).
+pub fn contact_force(m: &Model, d: &Data, id: i32) -> Vec6 {
+    let mut res = [0.0; 6];
+    if id < 0 || id >= d.raw.ncon {
+        return res;
+    }
+    let con = &d.contact[id as usize];
+    if con.efc_address < 0 {
+        return res;
+    }
+    let adr = con.efc_address as usize;
+    let dim = con.dim.max(0) as usize;
+    if m.raw.opt.cone == mjtCone_::mjCONE_PYRAMIDAL as i32 {
+        decode_pyramid(&mut res, &d.efc_force[adr..], &con.friction, dim);
+    } else {
+        res[..dim].copy_from_slice(&d.efc_force[adr..adr + dim]);
+    }
+    res
 }

@@ -1,7 +1,7 @@
 //! Velocity stage: body spatial velocities (cvel) and time derivatives of motion axes (cdof_dot).
 
-use super::linalg::{put, row};
-use super::{Data, Model, JNT_BALL, JNT_FREE};
+use super::linalg::{max, put, row};
+use super::{Data, Model, JNT_BALL, JNT_FREE, MINVAL};
 use crate::math::*;
 
 fn add6(a: &mut Vec6, b: &Vec6) {
@@ -45,5 +45,63 @@ pub fn com_vel(m: &Model, d: &mut Data) {
             }
         }
         put(d.cvel, i, &cvel);
+    }
+}
+
+/// Velocity of body `i`'s inertial frame, global orientation (mj_objectVelocity for mjOBJ_BODY).
+fn body_com_vel(m: &Model, d: &Data, i: usize) -> Vec6 {
+    let com = row(d.subtree_com, m.body_rootid()[i] as usize);
+    transform_spatial(&row(d.cvel, i), false, &row(d.xipos, i), &com, None)
+}
+
+/// subtree_linvel (com velocity) and subtree_angmom (angular momentum about the subtree com)
+/// of every body (mj_subtreeVel).
+pub fn subtree_vel(m: &Model, d: &mut Data) {
+    let nbody = m.raw.nbody as usize;
+    for i in 0..nbody {
+        let vel = body_com_vel(m, d, i);
+        let mass = m.body_mass()[i];
+        put(d.subtree_linvel, i, &scl3(&v3(&vel[3..]), mass));
+        let ximat = row::<9>(d.ximat, i);
+        let mut w = mul_mat_t_vec3(&ximat, &v3(&vel[..3]));
+        for k in 0..3 {
+            w[k] *= m.body_inertia()[3 * i + k];
+        }
+        put(d.subtree_angmom, i, &mul_mat_vec3(&ximat, &w));
+    }
+
+    // momenta summed into parents, then divided by the subtree masses
+    for i in (0..nbody).rev() {
+        if i > 0 {
+            let p = m.body_parentid()[i] as usize;
+            let sum = add3(&row(d.subtree_linvel, p), &row(d.subtree_linvel, i));
+            put(d.subtree_linvel, p, &sum);
+        }
+        let inv = 1.0 / max(MINVAL, m.body_subtreemass()[i]);
+        let v = scl3(&row(d.subtree_linvel, i), inv);
+        put(d.subtree_linvel, i, &v);
+    }
+
+    for i in (1..nbody).rev() {
+        let p = m.body_parentid()[i] as usize;
+        let vel = body_com_vel(m, d, i);
+        let com_i = row::<3>(d.subtree_com, i);
+        let linvel_i = row::<3>(d.subtree_linvel, i);
+
+        // body momentum about the subtree com, added to the subtree, which goes to the parent
+        let dx = sub3(&row(d.xipos, i), &com_i);
+        let dp = scl3(&sub3(&v3(&vel[3..]), &linvel_i), m.body_mass()[i]);
+        let own = add3(&row(d.subtree_angmom, i), &cross(&dx, &dp));
+        put(d.subtree_angmom, i, &own);
+        let mut parent = add3(&row(d.subtree_angmom, p), &own);
+
+        // momentum of the subtree's com motion about the parent's com
+        let dx = sub3(&com_i, &row(d.subtree_com, p));
+        let dv = scl3(
+            &sub3(&linvel_i, &row(d.subtree_linvel, p)),
+            m.body_subtreemass()[i],
+        );
+        parent = add3(&parent, &cross(&dx, &dv));
+        put(d.subtree_angmom, p, &parent);
     }
 }
