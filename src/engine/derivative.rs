@@ -5,18 +5,13 @@ use super::actuation::fwd_actuation;
 use super::fluid::{ellipsoid_max_moment, geom_semi_axes, inertia_box, local_fluid_velocity};
 use super::fluid::{pow2, uses_ellipsoid, GeomFluid};
 use super::forward::fwd_velocity;
+use super::jacdif::is_sparse;
 use super::jacobian::jac;
 use super::linalg::{add_to, add_to_scl, max, min};
 use super::{disabled, Data, EngineError, Model, JNT_BALL, JNT_FREE, MINVAL};
 use crate::abi::*;
 use crate::math::blas::{mul_mat_mat, mul_mat_t_mat};
 use crate::math::*;
-
-/// Does the model use sparse Jacobians (mj_isSparse)?
-pub fn is_sparse(m: &Model) -> bool {
-    let j = m.raw.opt.jacobian;
-    j == mjtJacobian::mjJAC_SPARSE as i32 || (j == mjtJacobian::mjJAC_AUTO as i32 && m.raw.nv >= 60)
-}
 
 // ---------------------------------------------------------------- spatial algebra derivatives
 
