@@ -100,6 +100,15 @@ void mj_EulerSkip(const mjModel *m, mjData *d, int skipfactor);
 
 void mj_RungeKutta(const mjModel *m, mjData *d, int N);
 
+void mjd_transitionFD(const mjModel *m,
+                      mjData *d,
+                      mjtNum eps,
+                      mjtByte centered,
+                      mjtNum *A,
+                      mjtNum *B,
+                      mjtNum *C,
+                      mjtNum *D);
+
 void mj_solveM(const mjModel *m, mjData *d, mjtNum *x, const mjtNum *y, int n);
 
 void mj_solveM2(const mjModel *m, mjData *d, mjtNum *x, const mjtNum *y, int n);
@@ -373,15 +382,6 @@ mjtNum mju_raySkin(int nface,
 int mj_activate(const char *filename);
 
 void mj_deactivate(void);
-
-void mjd_transitionFD(const mjModel *m,
-                      mjData *d,
-                      mjtNum eps,
-                      mjtByte centered,
-                      mjtNum *A,
-                      mjtNum *B,
-                      mjtNum *C,
-                      mjtNum *D);
 
 void mj_printFormattedModel(const mjModel *m, const char *filename, const char *float_format);
 

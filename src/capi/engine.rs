@@ -387,6 +387,49 @@ pub unsafe extern "C" fn mjd_smooth_vel(m: *const mjModel, d: *mut mjData) {
     run("mjd_smooth_vel", (), m, d, engine::derivative::smooth_vel)
 }
 
+#[no_mangle]
+pub unsafe extern "C" fn mjd_transitionFD(
+    m: *const mjModel,
+    d: *mut mjData,
+    eps: mjtNum,
+    centered: mjtByte,
+    A: *mut mjtNum,
+    B: *mut mjtNum,
+    C: *mut mjtNum,
+    D: *mut mjtNum,
+) {
+    if m.is_null() || d.is_null() {
+        errmem::error("mjd_transitionFD: NULL model or data");
+        return;
+    }
+    guard("mjd_transitionFD", (), || {
+        if let Some(cb) = callbacks_set() {
+            return Err(EngineError(format!(
+                "mjd_transitionFD: callbacks ({cb}) are not implemented yet"
+            )));
+        }
+        let mv = Model::new(&*m);
+        let (nv, na, nu) = (mv.raw.nv as usize, mv.raw.na as usize, mv.raw.nu as usize);
+        let (ndx, ns) = (2 * nv + na, mv.raw.nsensordata as usize);
+        let opt = |p: *mut mjtNum, n: usize| (!p.is_null()).then(|| slice_mut(p, n));
+        // every step runs on a fresh view of d, so that its scratch is released in between
+        let mut with = |f: &mut dyn FnMut(&mut Data) -> Result<(), EngineError>| {
+            let mut dv = Data::new(&*m, &mut *d);
+            f(&mut dv)
+        };
+        engine::derivative::transition_fd(
+            &mv,
+            &mut with,
+            eps,
+            centered != 0,
+            opt(A, ndx * ndx),
+            opt(B, ndx * nu),
+            opt(C, ns * ndx),
+            opt(D, ns * nu),
+        )
+    })
+}
+
 /// cbindgen:ignore
 #[no_mangle]
 pub unsafe extern "C" fn mjd_passive_velFD(

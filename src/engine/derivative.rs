@@ -4,13 +4,14 @@
 use super::actuation::fwd_actuation;
 use super::fluid::{ellipsoid_max_moment, geom_semi_axes, inertia_box, local_fluid_velocity};
 use super::fluid::{pow2, uses_ellipsoid, GeomFluid};
-use super::forward::fwd_velocity;
+use super::forward::{fwd_velocity, step, step_skip};
+use super::integrate::{differentiate_pos, integrate_pos};
 use super::jacdif::is_sparse;
 use super::jacobian::jac;
 use super::linalg::{add_to, add_to_scl, max, min};
 use super::{disabled, Data, EngineError, Model, JNT_BALL, JNT_FREE, MINVAL};
 use crate::abi::*;
-use crate::math::blas::{mul_mat_mat, mul_mat_t_mat};
+use crate::math::blas::{mul_mat_mat, mul_mat_t_mat, transpose};
 use crate::math::*;
 
 // ---------------------------------------------------------------- spatial algebra derivatives
@@ -912,4 +913,353 @@ pub fn smooth_vel_fd(m: &Model, d: &mut Data, eps: f64) -> Result<(), EngineErro
     }
     fwd_velocity(m, d)?;
     fwd_actuation(m, d)
+}
+
+// ---------------------------------------------------------------- finite-differenced transitions
+
+/// Runs a closure on a fresh view of the data (so each step starts with an empty arena).
+pub type WithData<'h> =
+    dyn FnMut(&mut dyn FnMut(&mut Data) -> Result<(), EngineError>) -> Result<(), EngineError> + 'h;
+
+/// Outputs of `step_fd`, each optional, rows per input (transposed control-theory layout).
+#[derive(Default)]
+pub struct StepFd<'o> {
+    pub dydq: Option<&'o mut [f64]>,
+    pub dydv: Option<&'o mut [f64]>,
+    pub dyda: Option<&'o mut [f64]>,
+    pub dydu: Option<&'o mut [f64]>,
+    pub dsdq: Option<&'o mut [f64]>,
+    pub dsdv: Option<&'o mut [f64]>,
+    pub dsda: Option<&'o mut [f64]>,
+    pub dsdu: Option<&'o mut [f64]>,
+}
+
+fn get_state(m: &Model, d: &Data, state: &mut [f64], sensor: Option<&mut [f64]>) {
+    let (nq, nv, na) = (m.raw.nq as usize, m.raw.nv as usize, m.raw.na as usize);
+    state[..nq].copy_from_slice(&d.qpos[..nq]);
+    state[nq..nq + nv].copy_from_slice(&d.qvel[..nv]);
+    state[nq + nv..nq + nv + na].copy_from_slice(&d.act[..na]);
+    if let Some(s) = sensor {
+        let ns = m.raw.nsensordata as usize;
+        s[..ns].copy_from_slice(&d.sensordata[..ns]);
+    }
+}
+
+fn set_state(m: &Model, d: &mut Data, state: &[f64], ctrl: Option<&[f64]>, warm: Option<&[f64]>) {
+    let (nq, nv, na) = (m.raw.nq as usize, m.raw.nv as usize, m.raw.na as usize);
+    d.qpos[..nq].copy_from_slice(&state[..nq]);
+    d.qvel[..nv].copy_from_slice(&state[nq..nq + nv]);
+    d.act[..na].copy_from_slice(&state[nq + nv..nq + nv + na]);
+    if let Some(c) = ctrl {
+        d.ctrl.copy_from_slice(c);
+    }
+    if let Some(w) = warm {
+        d.qacc_warmstart[..nv].copy_from_slice(w);
+    }
+}
+
+/// dx = (x2 - x1) / h.
+fn diff(dx: &mut [f64], x1: &[f64], x2: &[f64], h: f64, n: usize) {
+    let inv_h = 1.0 / h;
+    for i in 0..n {
+        dx[i] = inv_h * (x2[i] - x1[i]);
+    }
+}
+
+/// ds = (s2 - s1) / h on the state manifold.
+fn state_diff(m: &Model, ds: &mut [f64], s1: &[f64], s2: &[f64], h: f64) {
+    let (nq, nv, na) = (m.raw.nq as usize, m.raw.nv as usize, m.raw.na as usize);
+    if nq == nv {
+        diff(ds, s1, s2, h, nq + nv + na);
+    } else {
+        differentiate_pos(m, &mut ds[..nv], h, &s1[..nq], &s2[..nq]);
+        diff(&mut ds[nv..], &s1[nq..], &s2[nq..], h, nv + na);
+    }
+}
+
+/// Forward, backward or centered difference of sensor vectors (centered as 2.2.2 computes it).
+fn clamped_diff(
+    dx: &mut [f64],
+    x: &[f64],
+    plus: Option<&[f64]>,
+    minus: Option<&[f64]>,
+    h: f64,
+    n: usize,
+) {
+    match (plus, minus) {
+        (Some(p), None) => diff(dx, x, p, h, n),
+        (None, Some(mi)) => diff(dx, mi, x, h, n),
+        (Some(p), Some(mi)) => diff(dx, p, mi, 2.0 * h, n),
+        (None, None) => dx[..n].fill(0.0),
+    }
+}
+
+fn clamped_state_diff(
+    m: &Model,
+    ds: &mut [f64],
+    s: &[f64],
+    plus: Option<&[f64]>,
+    minus: Option<&[f64]>,
+    h: f64,
+) {
+    match (plus, minus) {
+        (Some(p), None) => state_diff(m, ds, s, p, h),
+        (None, Some(mi)) => state_diff(m, ds, mi, s, h),
+        (Some(p), Some(mi)) => state_diff(m, ds, mi, p, 2.0 * h),
+        (None, None) => {
+            let n = (m.raw.nq + m.raw.nv + m.raw.na) as usize;
+            ds[..n].fill(0.0)
+        }
+    }
+}
+
+fn in_range(x1: f64, x2: f64, r: &[f64]) -> bool {
+    x1 >= r[0] && x1 <= r[1] && x2 >= r[0] && x2 <= r[1]
+}
+
+/// Which input a finite-difference pass nudges.
+#[derive(Clone, Copy)]
+enum Input {
+    Act,
+    Vel,
+    Pos,
+}
+
+/// Finite-differenced Jacobians of the next state and the sensors of mj_step (mjd_stepFD).
+pub fn step_fd(
+    m: &Model,
+    with: &mut WithData,
+    eps: f64,
+    centered: bool,
+    out: StepFd,
+) -> Result<(), EngineError> {
+    let (nq, nv, na, nu) = (
+        m.raw.nq as usize,
+        m.raw.nv as usize,
+        m.raw.na as usize,
+        m.raw.nu as usize,
+    );
+    let ns = m.raw.nsensordata as usize;
+    let nx = nq + nv + na;
+    let ndx = 2 * nv + na;
+    let mut state = vec![0.0; nx];
+    let mut next = vec![0.0; nx];
+    let mut next_plus = vec![0.0; nx];
+    let mut next_minus = vec![0.0; nx];
+    let use_warm = !disabled(m, mjtDisableBit_::mjDSBL_WARMSTART);
+    let mut warm = vec![0.0; nv];
+    let StepFd {
+        dydq,
+        dydv,
+        dyda,
+        dydu,
+        dsdq,
+        dsdv,
+        dsda,
+        dsdu,
+    } = out;
+    let skipsensor = dsdq.is_none() && dsdv.is_none() && dsda.is_none() && dsdu.is_none();
+    let mut sensor = vec![0.0; ns];
+    let mut sensor_plus = vec![0.0; ns];
+    let mut sensor_minus = vec![0.0; ns];
+    let mut ctrl = vec![0.0; nu];
+
+    with(&mut |d| {
+        ctrl.copy_from_slice(&d.ctrl[..nu]);
+        get_state(m, d, &mut state, None);
+        if use_warm {
+            warm.copy_from_slice(&d.qacc_warmstart[..nv]);
+        }
+        Ok(())
+    })?;
+    let warm_opt = use_warm.then_some(&warm[..]);
+    with(&mut |d| {
+        step(m, d)?;
+        get_state(m, d, &mut next, (!skipsensor).then_some(&mut sensor[..]));
+        set_state(m, d, &state, Some(&ctrl), warm_opt);
+        Ok(())
+    })?;
+
+    // one nudged step: `nudge` edits the data, the result lands in (nx, sens)
+    let mut nudged = |nudge: &dyn Fn(&mut Data) -> Result<(), EngineError>,
+                      skipstage: mjtStage_,
+                      reset_ctrl: bool,
+                      nx_out: &mut [f64],
+                      sens: &mut [f64]|
+     -> Result<(), EngineError> {
+        with(&mut |d| {
+            nudge(d)?;
+            step_skip(m, d, skipstage as i32, skipsensor)?;
+            get_state(m, d, nx_out, (!skipsensor).then_some(&mut *sens));
+            let c = reset_ctrl.then_some(&ctrl[..]);
+            set_state(m, d, &state, c, warm_opt);
+            Ok(())
+        })
+    };
+
+    if dydu.is_some() || dsdu.is_some() {
+        let (mut dydu, mut dsdu) = (dydu, dsdu);
+        for i in 0..nu {
+            let limited = m.actuator_ctrllimited()[i] != 0;
+            let range = &m.actuator_ctrlrange()[2 * i..2 * i + 2];
+            let fwd = !limited || in_range(ctrl[i], ctrl[i] + eps, range);
+            if fwd {
+                nudged(
+                    &|d: &mut Data| {
+                        d.ctrl[i] += eps;
+                        Ok(())
+                    },
+                    mjtStage_::mjSTAGE_VEL,
+                    true,
+                    &mut next_plus,
+                    &mut sensor_plus,
+                )?;
+            }
+            let back = (centered || !fwd) && (!limited || in_range(ctrl[i] - eps, ctrl[i], range));
+            if back {
+                nudged(
+                    &|d: &mut Data| {
+                        d.ctrl[i] -= eps;
+                        Ok(())
+                    },
+                    mjtStage_::mjSTAGE_VEL,
+                    true,
+                    &mut next_minus,
+                    &mut sensor_minus,
+                )?;
+            }
+            if let Some(o) = dydu.as_deref_mut() {
+                clamped_state_diff(
+                    m,
+                    &mut o[i * ndx..],
+                    &next,
+                    fwd.then_some(&next_plus[..]),
+                    back.then_some(&next_minus[..]),
+                    eps,
+                );
+            }
+            if let Some(o) = dsdu.as_deref_mut() {
+                clamped_diff(
+                    &mut o[i * ns..],
+                    &sensor,
+                    fwd.then_some(&sensor_plus[..]),
+                    back.then_some(&sensor_minus[..]),
+                    eps,
+                    ns,
+                );
+            }
+        }
+    }
+
+    let passes = [
+        (Input::Act, dyda, dsda, na, mjtStage_::mjSTAGE_VEL),
+        (Input::Vel, dydv, dsdv, nv, mjtStage_::mjSTAGE_POS),
+        (Input::Pos, dydq, dsdq, nv, mjtStage_::mjSTAGE_NONE),
+    ];
+    for (input, mut dy, mut ds, n, skip) in passes {
+        if dy.is_none() && ds.is_none() {
+            continue;
+        }
+        for i in 0..n {
+            let nudge = |d: &mut Data, sgn: f64| -> Result<(), EngineError> {
+                match input {
+                    Input::Act => d.act[i] += sgn * eps,
+                    Input::Vel => d.qvel[i] += sgn * eps,
+                    Input::Pos => pos_nudge(m, d, i, sgn * eps)?,
+                }
+                Ok(())
+            };
+            nudged(
+                &|d| nudge(d, 1.0),
+                skip,
+                false,
+                &mut next_plus,
+                &mut sensor_plus,
+            )?;
+            if centered {
+                nudged(
+                    &|d| nudge(d, -1.0),
+                    skip,
+                    false,
+                    &mut next_minus,
+                    &mut sensor_minus,
+                )?;
+            }
+            if let Some(o) = dy.as_deref_mut() {
+                if centered {
+                    state_diff(m, &mut o[i * ndx..], &next_minus, &next_plus, 2.0 * eps);
+                } else {
+                    state_diff(m, &mut o[i * ndx..], &next, &next_plus, eps);
+                }
+            }
+            if let Some(o) = ds.as_deref_mut() {
+                if centered {
+                    diff(&mut o[i * ns..], &sensor_minus, &sensor_plus, 2.0 * eps, ns);
+                } else {
+                    diff(&mut o[i * ns..], &sensor, &sensor_plus, eps, ns);
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
+/// qpos moved by `h` along dof `i` (a unit velocity integrated over h).
+fn pos_nudge(m: &Model, d: &mut Data, i: usize, h: f64) -> Result<(), EngineError> {
+    let dpos = d.arena.alloc(m.raw.nv as usize)?;
+    dpos[i] = 1.0;
+    integrate_pos(m, d.qpos, dpos, h);
+    Ok(())
+}
+
+/// Transition matrices A, B, C, D of mj_step by finite differences (mjd_transitionFD).
+#[allow(clippy::too_many_arguments)]
+pub fn transition_fd(
+    m: &Model,
+    with: &mut WithData,
+    eps: f64,
+    centered: bool,
+    a: Option<&mut [f64]>,
+    b: Option<&mut [f64]>,
+    c: Option<&mut [f64]>,
+    dm: Option<&mut [f64]>,
+) -> Result<(), EngineError> {
+    let (nv, na, nu) = (m.raw.nv as usize, m.raw.na as usize, m.raw.nu as usize);
+    let ns = m.raw.nsensordata as usize;
+    let ndx = 2 * nv + na;
+    let mut at = vec![0.0; if a.is_some() { ndx * ndx } else { 0 }];
+    let mut bt = vec![0.0; if b.is_some() { nu * ndx } else { 0 }];
+    let mut ct = vec![0.0; if c.is_some() { ndx * ns } else { 0 }];
+    let mut dt = vec![0.0; if dm.is_some() { nu * ns } else { 0 }];
+    let mut out = StepFd::default();
+    if a.is_some() {
+        let (q, rest) = at.split_at_mut(ndx * nv);
+        let (v, act) = rest.split_at_mut(ndx * nv);
+        (out.dydq, out.dydv, out.dyda) = (Some(q), Some(v), Some(act));
+    }
+    if c.is_some() {
+        let (q, rest) = ct.split_at_mut(ns * nv);
+        let (v, act) = rest.split_at_mut(ns * nv);
+        (out.dsdq, out.dsdv, out.dsda) = (Some(q), Some(v), Some(act));
+    }
+    if b.is_some() {
+        out.dydu = Some(&mut bt);
+    }
+    if dm.is_some() {
+        out.dsdu = Some(&mut dt);
+    }
+    step_fd(m, with, eps, centered, out)?;
+    if let Some(a) = a {
+        transpose(a, &at, ndx, ndx);
+    }
+    if let Some(b) = b {
+        transpose(b, &bt, nu, ndx);
+    }
+    if let Some(c) = c {
+        transpose(c, &ct, ndx, ns);
+    }
+    if let Some(dm) = dm {
+        transpose(dm, &dt, nu, ns);
+    }
+    Ok(())
 }
