@@ -87,6 +87,27 @@ fn main() {
     }
 }
 
+/// Functions 2.2.2 exports that its mujoco.h does not declare.
+const INTERNAL: &[&str] = &[
+    "mj_EulerSkip",
+    "mj_factorI",
+    "mj_implicit",
+    "mj_implicitSkip",
+    "mj_jacDifPair",
+    "mj_makeMSparse",
+    "mj_setMSparse",
+    "mj_solveLD",
+    "mj_stepSkip",
+    "mj_validateReferences",
+    "mjd_passive_vel",
+    "mjd_passive_velFD",
+    "mjd_smooth_vel",
+    "mjd_smooth_velFD",
+    "mju_QCQP2",
+    "mju_QCQP3",
+    "mju_geomSemiAxes",
+];
+
 const MUJOCO_H_TRAILER: &str = r#"
 #define mjVERSION_HEADER 222
 
@@ -188,15 +209,10 @@ fn header(
     config.enumeration.prefix_with_name = false;
     config.usize_is_size_t = true;
     // symbols 2.2.2 exports outside mujoco.h stay out of it
-    let internal = std::fs::read_to_string(root.join("src/capi/pending_internal.rs")).unwrap();
-    for line in internal.lines() {
-        if let Some(rest) = line.strip_prefix("pub unsafe extern \"C\" fn ") {
-            config
-                .export
-                .exclude
-                .push(rest.split('(').next().unwrap().to_string());
-        }
-    }
+    config
+        .export
+        .exclude
+        .extend(INTERNAL.iter().map(|s| s.to_string()));
     // every type a header's source declares, reachable from a function or not
     for src in srcs {
         let text = std::fs::read_to_string(root.join(src)).unwrap();

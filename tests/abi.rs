@@ -215,3 +215,33 @@ fn headers_are_fresh() {
         text(&o.stdout)
     );
 }
+
+/// Our mujoco.h declares exactly the functions 2.2.2's declares: no more (internal exports
+/// such as mj_stepSkip stay out of it, as in 2.2.2), no fewer.
+#[test]
+fn header_declares_the_same_functions() {
+    require_reference();
+    let names = |path: std::path::PathBuf| -> std::collections::BTreeSet<String> {
+        let text = std::fs::read_to_string(&path).unwrap();
+        let mut set = std::collections::BTreeSet::new();
+        for (i, _) in text.match_indices('(') {
+            let head = &text[..i];
+            let start = head
+                .rfind(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+                .map_or(0, |p| p + 1);
+            let name = &head[start..];
+            if ["mj_", "mju_", "mjd_"].iter().any(|p| name.starts_with(p)) {
+                set.insert(name.to_string());
+            }
+        }
+        set
+    };
+    let reference = names(std::path::PathBuf::from(REF_INCLUDE));
+    let ours = names(root().join("include/mujoco/mujoco.h"));
+    let extra: Vec<_> = ours.difference(&reference).collect();
+    let missing: Vec<_> = reference.difference(&ours).collect();
+    assert!(
+        extra.is_empty() && missing.is_empty(),
+        "mujoco.h differs from 2.2.2's: extra {extra:?}, missing {missing:?}"
+    );
+}

@@ -92,29 +92,20 @@ void mj_collision(const mjModel *m, mjData *d);
 
 void mj_forwardSkip(const mjModel *m, mjData *d, int skipstage, int skipsensor);
 
-void mj_stepSkip(const mjModel *m, mjData *d, int skipstage, int skipsensor);
-
-void mj_EulerSkip(const mjModel *m, mjData *d, int skipfactor);
-
 void mj_RungeKutta(const mjModel *m, mjData *d, int N);
+
+void mjd_transitionFD(const mjModel *m,
+                      mjData *d,
+                      mjtNum eps,
+                      mjtByte centered,
+                      mjtNum *A,
+                      mjtNum *B,
+                      mjtNum *C,
+                      mjtNum *D);
 
 void mj_solveM(const mjModel *m, mjData *d, mjtNum *x, const mjtNum *y, int n);
 
 void mj_solveM2(const mjModel *m, mjData *d, mjtNum *x, const mjtNum *y, int n);
-
-void mj_solveLD(const mjModel *m,
-                mjtNum *x,
-                const mjtNum *y,
-                int n,
-                const mjtNum *qLD,
-                const mjtNum *qLDiagInv);
-
-void mj_factorI(const mjModel *m,
-                mjData *d,
-                const mjtNum *M,
-                mjtNum *qLD,
-                mjtNum *qLDiagInv,
-                mjtNum *qLDiagSqrtInv);
 
 void mj_rne(const mjModel *m, mjData *d, int flg_acc, mjtNum *result);
 
@@ -374,15 +365,6 @@ int mj_activate(const char *filename);
 
 void mj_deactivate(void);
 
-void mjd_transitionFD(const mjModel *m,
-                      mjData *d,
-                      mjtNum eps,
-                      mjtByte centered,
-                      mjtNum *A,
-                      mjtNum *B,
-                      mjtNum *C,
-                      mjtNum *D);
-
 void mj_printFormattedModel(const mjModel *m, const char *filename, const char *float_format);
 
 void mj_printModel(const mjModel *m, const char *filename);
@@ -526,10 +508,6 @@ int mju_cholUpdate(mjtNum *mat, mjtNum *x, int n, int flg_plus);
 
 int mju_eig3(mjtNum *eigval, mjtNum *eigvec, mjtNum *quat, const mjtNum *mat);
 
-int mju_QCQP2(mjtNum *res, const mjtNum *Ain, const mjtNum *bin, const mjtNum *d, mjtNum r);
-
-int mju_QCQP3(mjtNum *res, const mjtNum *Ain, const mjtNum *bin, const mjtNum *d, mjtNum r);
-
 mjtNum mju_muscleGain(mjtNum len,
                       mjtNum vel,
                       const mjtNum *lengthrange,
@@ -593,8 +571,6 @@ void mju_printMatSparse(const mjtNum *mat,
                         const int *rownnz,
                         const int *rowadr,
                         const int *colind);
-
-void mju_geomSemiAxes(const mjModel *m, int geom_id, mjtNum *semiaxes);
 
 mjModel *mj_loadXML(const char *filename, const mjVFS *vfs, char *error, int error_sz);
 

@@ -278,6 +278,168 @@ pub unsafe extern "C" fn mj_RungeKutta(m: *const mjModel, d: *mut mjData, N: c_i
     })
 }
 
+// 2.2.2 exports the next eight symbols outside mujoco.h: `cbindgen:ignore` keeps them out of it.
+
+unsafe fn ints_mut<'a>(p: *mut c_int, n: usize) -> &'a mut [i32] {
+    if p.is_null() || n == 0 {
+        &mut []
+    } else {
+        std::slice::from_raw_parts_mut(p, n)
+    }
+}
+
+unsafe fn ints<'a>(p: *const c_int, n: usize) -> &'a [i32] {
+    if p.is_null() || n == 0 {
+        &[]
+    } else {
+        std::slice::from_raw_parts(p, n)
+    }
+}
+
+/// cbindgen:ignore
+#[no_mangle]
+pub unsafe extern "C" fn mj_implicit(m: *const mjModel, d: *mut mjData) {
+    run("mj_implicit", (), m, d, |m, d| {
+        integrate::implicit(m, d, false)
+    })
+}
+
+/// cbindgen:ignore
+#[no_mangle]
+pub unsafe extern "C" fn mj_implicitSkip(m: *const mjModel, d: *mut mjData, skipfactor: c_int) {
+    run("mj_implicitSkip", (), m, d, |m, d| {
+        integrate::implicit(m, d, skipfactor != 0)
+    })
+}
+
+/// cbindgen:ignore
+#[no_mangle]
+pub unsafe extern "C" fn mj_makeMSparse(
+    m: *const mjModel,
+    d: *mut mjData,
+    rownnz: *mut c_int,
+    rowadr: *mut c_int,
+    colind: *mut c_int,
+) {
+    run("mj_makeMSparse", (), m, d, |mv, dv| {
+        let (nv, nd) = (mv.raw.nv.max(0) as usize, mv.raw.nD.max(0) as usize);
+        let scratch = dv.arena.alloc_int(nv)?;
+        integrate::make_m_sparse(
+            mv,
+            ints_mut(rownnz, nv),
+            ints_mut(rowadr, nv),
+            ints_mut(colind, nd),
+            scratch,
+        )
+    })
+}
+
+/// cbindgen:ignore
+#[no_mangle]
+pub unsafe extern "C" fn mj_setMSparse(
+    m: *const mjModel,
+    d: *mut mjData,
+    dst: *mut mjtNum,
+    rownnz: *const c_int,
+    rowadr: *const c_int,
+    colind: *const c_int,
+) {
+    let _ = colind;
+    run("mj_setMSparse", (), m, d, |mv, dv| {
+        let (nv, nd) = (mv.raw.nv.max(0) as usize, mv.raw.nD.max(0) as usize);
+        let scratch = dv.arena.alloc_int(nv)?;
+        integrate::set_m_sparse(
+            mv,
+            dv.qM,
+            slice_mut(dst, nd),
+            ints(rownnz, nv),
+            ints(rowadr, nv),
+            scratch,
+        );
+        Ok(())
+    })
+}
+
+/// cbindgen:ignore
+#[no_mangle]
+pub unsafe extern "C" fn mjd_passive_vel(m: *const mjModel, d: *mut mjData, DfDv: *mut mjtNum) {
+    run("mjd_passive_vel", (), m, d, |mv, dv| {
+        let nv = mv.raw.nv.max(0) as usize;
+        engine::derivative::passive_vel(mv, dv, slice_mut(DfDv, nv * nv))
+    })
+}
+
+/// cbindgen:ignore
+#[no_mangle]
+pub unsafe extern "C" fn mjd_smooth_vel(m: *const mjModel, d: *mut mjData) {
+    run("mjd_smooth_vel", (), m, d, engine::derivative::smooth_vel)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjd_transitionFD(
+    m: *const mjModel,
+    d: *mut mjData,
+    eps: mjtNum,
+    centered: mjtByte,
+    A: *mut mjtNum,
+    B: *mut mjtNum,
+    C: *mut mjtNum,
+    D: *mut mjtNum,
+) {
+    if m.is_null() || d.is_null() {
+        errmem::error("mjd_transitionFD: NULL model or data");
+        return;
+    }
+    guard("mjd_transitionFD", (), || {
+        if let Some(cb) = callbacks_set() {
+            return Err(EngineError(format!(
+                "mjd_transitionFD: callbacks ({cb}) are not implemented yet"
+            )));
+        }
+        let mv = Model::new(&*m);
+        let (nv, na, nu) = (mv.raw.nv as usize, mv.raw.na as usize, mv.raw.nu as usize);
+        let (ndx, ns) = (2 * nv + na, mv.raw.nsensordata as usize);
+        let opt = |p: *mut mjtNum, n: usize| (!p.is_null()).then(|| slice_mut(p, n));
+        // every step runs on a fresh view of d, so that its scratch is released in between
+        let mut with = |f: &mut dyn FnMut(&mut Data) -> Result<(), EngineError>| {
+            let mut dv = Data::new(&*m, &mut *d);
+            f(&mut dv)
+        };
+        engine::derivative::transition_fd(
+            &mv,
+            &mut with,
+            eps,
+            centered != 0,
+            opt(A, ndx * ndx),
+            opt(B, ndx * nu),
+            opt(C, ns * ndx),
+            opt(D, ns * nu),
+        )
+    })
+}
+
+/// cbindgen:ignore
+#[no_mangle]
+pub unsafe extern "C" fn mjd_passive_velFD(
+    m: *const mjModel,
+    d: *mut mjData,
+    eps: mjtNum,
+    DfDv: *mut mjtNum,
+) {
+    run("mjd_passive_velFD", (), m, d, |mv, dv| {
+        let nv = mv.raw.nv.max(0) as usize;
+        engine::derivative::passive_vel_fd(mv, dv, eps, slice_mut(DfDv, nv * nv))
+    })
+}
+
+/// cbindgen:ignore
+#[no_mangle]
+pub unsafe extern "C" fn mjd_smooth_velFD(m: *const mjModel, d: *mut mjData, eps: mjtNum) {
+    run("mjd_smooth_velFD", (), m, d, |mv, dv| {
+        engine::derivative::smooth_vel_fd(mv, dv, eps)
+    })
+}
+
 #[no_mangle]
 pub unsafe extern "C" fn mj_solveM(
     m: *const mjModel,

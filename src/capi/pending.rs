@@ -76,7 +76,3 @@ pub unsafe extern "C" fn mj_deactivate() {
     pending("mj_deactivate");
 }
 
-#[no_mangle]
-pub unsafe extern "C" fn mjd_transitionFD(m: *const mjModel, d: *mut mjData, eps: mjtNum, centered: mjtByte, A: *mut mjtNum, B: *mut mjtNum, C: *mut mjtNum, D: *mut mjtNum) {
-    pending("mjd_transitionFD");
-}

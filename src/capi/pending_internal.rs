@@ -8,47 +8,8 @@ use std::os::raw::{c_char, c_int, c_void};
 use super::pending;
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_implicit(m: *const mjModel, d: *mut mjData) {
-    pending("mj_implicit");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_implicitSkip(m: *const mjModel, d: *mut mjData, skipfactor: c_int) {
-    pending("mj_implicitSkip");
-}
-
-#[no_mangle]
 pub unsafe extern "C" fn mj_jacDifPair(m: *const mjModel, d: *const mjData, chain: *mut c_int, b1: c_int, b2: c_int, pos1: *const mjtNum, pos2: *const mjtNum, jac1p: *mut mjtNum, jac2p: *mut mjtNum, jacdifp: *mut mjtNum, jac1r: *mut mjtNum, jac2r: *mut mjtNum, jacdifr: *mut mjtNum) -> c_int {
     pending("mj_jacDifPair");
     0 as c_int
 }
 
-#[no_mangle]
-pub unsafe extern "C" fn mj_makeMSparse(m: *const mjModel, d: *mut mjData, rownnz: *mut c_int, rowadr: *mut c_int, colind: *mut c_int) {
-    pending("mj_makeMSparse");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_setMSparse(m: *const mjModel, d: *mut mjData, dst: *mut mjtNum, rownnz: *const c_int, rowadr: *const c_int, colind: *const c_int) {
-    pending("mj_setMSparse");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mjd_passive_vel(m: *const mjModel, d: *mut mjData, DfDv: *mut mjtNum) {
-    pending("mjd_passive_vel");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mjd_passive_velFD(m: *const mjModel, d: *mut mjData, eps: mjtNum, DfDv: *mut mjtNum) {
-    pending("mjd_passive_velFD");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mjd_smooth_vel(m: *const mjModel, d: *mut mjData) {
-    pending("mjd_smooth_vel");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mjd_smooth_velFD(m: *const mjModel, d: *mut mjData, eps: mjtNum) {
-    pending("mjd_smooth_velFD");
-}

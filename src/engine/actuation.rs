@@ -19,9 +19,8 @@ const DYN_FILTER: i32 = mjtDyn_::mjDYN_FILTER as i32;
 const DYN_MUSCLE: i32 = mjtDyn_::mjDYN_MUSCLE as i32;
 
 /// Gain of actuator `i` at its current length and velocity.
-fn gain(m: &Model, d: &Data, i: usize) -> Result<f64, EngineError> {
+fn gain(m: &Model, i: usize, len: f64, vel: f64) -> Result<f64, EngineError> {
     let prm = &m.actuator_gainprm()[mjNGAIN * i..mjNGAIN * (i + 1)];
-    let (len, vel) = (d.actuator_length[i], d.actuator_velocity[i]);
     Ok(match m.actuator_gaintype()[i] {
         GAIN_FIXED => prm[0],
         GAIN_AFFINE => prm[0] + prm[1] * len + prm[2] * vel,
@@ -37,9 +36,8 @@ fn gain(m: &Model, d: &Data, i: usize) -> Result<f64, EngineError> {
 }
 
 /// Bias of actuator `i` at its current length and velocity.
-fn bias(m: &Model, d: &Data, i: usize) -> Result<f64, EngineError> {
+fn bias(m: &Model, i: usize, len: f64, vel: f64) -> Result<f64, EngineError> {
     let prm = &m.actuator_biasprm()[mjNBIAS * i..mjNBIAS * (i + 1)];
-    let (len, vel) = (d.actuator_length[i], d.actuator_velocity[i]);
     Ok(match m.actuator_biastype()[i] {
         BIAS_NONE => 0.0,
         BIAS_AFFINE => prm[0] + prm[1] * len + prm[2] * vel,
@@ -75,63 +73,55 @@ pub fn fwd_actuation(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     if nu == 0 || disabled(m, mjtDisableBit_::mjDSBL_ACTUATION) {
         return Ok(());
     }
-    let ctrl = d.arena.alloc(nu)?;
-    actuate(m, d, ctrl, nu, nv, na)?;
+    d.arena.scope(|a| -> Result<(), EngineError> {
+        let ctrl = a.alloc(nu)?;
+        let noclamp = disabled(m, mjtDisableBit_::mjDSBL_CLAMPCTRL);
+        for i in 0..nu {
+            ctrl[i] = if !noclamp && m.actuator_ctrllimited()[i] != 0 {
+                clip(
+                    d.ctrl[i],
+                    m.actuator_ctrlrange()[2 * i],
+                    m.actuator_ctrlrange()[2 * i + 1],
+                )
+            } else {
+                d.ctrl[i]
+            };
+        }
+        for i in 0..nu {
+            if is_bad(ctrl[i]) {
+                warning(d.raw, mjtWarning_::mjWARN_BADCTRL as i32, i as i32)?;
+                ctrl.fill(0.0);
+                break;
+            }
+        }
+        for i in 0..nu {
+            let (len, vel) = (d.actuator_length[i], d.actuator_velocity[i]);
+            let g = gain(m, i, len, vel)?;
+            let input = if m.actuator_dyntype()[i] == DYN_NONE {
+                ctrl[i]
+            } else {
+                d.act[i + na - nu]
+            };
+            let mut f = g * input;
+            f += bias(m, i, len, vel)?;
+            d.actuator_force[i] = f;
+        }
+        for i in 0..nu {
+            if m.actuator_forcelimited()[i] != 0 {
+                d.actuator_force[i] = clip(
+                    d.actuator_force[i],
+                    m.actuator_forcerange()[2 * i],
+                    m.actuator_forcerange()[2 * i + 1],
+                );
+            }
+        }
+        mul_mat_t_vec(d.qfrc_actuator, d.actuator_moment, d.actuator_force, nu, nv);
+        for i in nu - na..nu {
+            let j = i + na - nu;
+            d.act_dot[j] = act_rate(m, i, ctrl[i], d.act[j])?;
+        }
+        Ok(())
+    })?;
     tick(d, mjtTimer_::mjTIMER_ACTUATION);
-    Ok(())
-}
-
-fn actuate(
-    m: &Model,
-    d: &mut Data,
-    ctrl: &mut [f64],
-    nu: usize,
-    nv: usize,
-    na: usize,
-) -> Result<(), EngineError> {
-    let noclamp = disabled(m, mjtDisableBit_::mjDSBL_CLAMPCTRL);
-    for i in 0..nu {
-        ctrl[i] = if !noclamp && m.actuator_ctrllimited()[i] != 0 {
-            clip(
-                d.ctrl[i],
-                m.actuator_ctrlrange()[2 * i],
-                m.actuator_ctrlrange()[2 * i + 1],
-            )
-        } else {
-            d.ctrl[i]
-        };
-    }
-    for i in 0..nu {
-        if is_bad(ctrl[i]) {
-            warning(d.raw, mjtWarning_::mjWARN_BADCTRL as i32, i as i32)?;
-            ctrl.fill(0.0);
-            break;
-        }
-    }
-    for i in 0..nu {
-        let g = gain(m, d, i)?;
-        let input = if m.actuator_dyntype()[i] == DYN_NONE {
-            ctrl[i]
-        } else {
-            d.act[i + na - nu]
-        };
-        let mut f = g * input;
-        f += bias(m, d, i)?;
-        d.actuator_force[i] = f;
-    }
-    for i in 0..nu {
-        if m.actuator_forcelimited()[i] != 0 {
-            d.actuator_force[i] = clip(
-                d.actuator_force[i],
-                m.actuator_forcerange()[2 * i],
-                m.actuator_forcerange()[2 * i + 1],
-            );
-        }
-    }
-    mul_mat_t_vec(d.qfrc_actuator, d.actuator_moment, d.actuator_force, nu, nv);
-    for i in nu - na..nu {
-        let j = i + na - nu;
-        d.act_dot[j] = act_rate(m, i, ctrl[i], d.act[j])?;
-    }
     Ok(())
 }

@@ -4,7 +4,7 @@ use super::actuation::fwd_actuation;
 use super::collision::collision;
 use super::constraint::{make_constraint, project_constraint, reference_constraint};
 use super::inertia::{crb, factor_m, solve_ld};
-use super::integrate::{euler, runge_kutta};
+use super::integrate::{euler, implicit, runge_kutta};
 use super::jacobian::jac;
 use super::kinematics::{camlight, com_pos, kinematics};
 use super::linalg::{add_to, is_bad, mul_mat_t_vec, mul_mat_vec, row};
@@ -14,7 +14,7 @@ use super::sensor::{sensor_acc, sensor_pos, sensor_vel};
 use super::support::{energy_pos, energy_vel, reset_data, warning};
 use super::transmission::transmission;
 use super::velocity::com_vel;
-use super::{enabled, not_implemented, tick, Data, EngineError, Model};
+use super::{enabled, tick, Data, EngineError, Model};
 use crate::abi::*;
 use mjtTimer_::*;
 
@@ -240,7 +240,7 @@ pub fn step_skip(
         }
         x if x == mjtIntegrator_::mjINT_RK4 as i32 => runge_kutta(m, d, 4)?,
         x if x == mjtIntegrator_::mjINT_IMPLICIT as i32 => {
-            return Err(not_implemented("the implicit integrator is"))
+            implicit(m, d, skipstage >= mjtStage_::mjSTAGE_VEL as i32)?
         }
         _ => return Err(EngineError("Invalid integrator".into())),
     }
@@ -271,9 +271,10 @@ pub fn step2(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     check_acc(m, d)?;
     check_fwdinv(m, d)?;
     if m.raw.opt.integrator == mjtIntegrator_::mjINT_IMPLICIT as i32 {
-        return Err(not_implemented("the implicit integrator is"));
+        implicit(m, d, false)?;
+    } else {
+        euler(m, d, false)?;
     }
-    euler(m, d, false)?;
     // step2 does not count as a separate step
     d.raw.timer[mjTIMER_STEP as usize].number -= 1;
     tick(d, mjTIMER_STEP);

@@ -1,10 +1,13 @@
-//! Integrators (semi-implicit Euler with implicit dof damping, RK4) and qpos-space arithmetic.
+//! Integrators (semi-implicit Euler with implicit dof damping, RK4, implicit in velocity) and
+//! qpos-space arithmetic.
 
+use super::derivative::smooth_vel;
 use super::forward::forward_skip;
 use super::inertia::{factor_i, solve_ld};
 use super::linalg::{add_to_scl, clip};
 use super::{Data, EngineError, Model, JNT_BALL, JNT_FREE, JNT_HINGE, JNT_SLIDE};
 use crate::abi::mjtStage_;
+use crate::math::chol_sparse::{factor_lu_sparse, solve_lu_sparse};
 use crate::math::*;
 
 /// qpos += qvel*dt on the joint manifold (mj_integratePos).
@@ -185,5 +188,112 @@ pub fn runge_kutta(m: &Model, d: &mut Data, n: usize) -> Result<(), EngineError>
     let (vel, rest) = dx.split_at(nv);
     let (acc, act_dot) = rest.split_at(nv);
     advance(m, d, act_dot, acc, Some(vel));
+    Ok(())
+}
+
+/// Row-sparse structure of the inertia matrix with both triangles (mj_makeMSparse); `scratch`
+/// needs nv ints.
+pub fn make_m_sparse(
+    m: &Model,
+    rownnz: &mut [i32],
+    rowadr: &mut [i32],
+    colind: &mut [i32],
+    scratch: &mut [i32],
+) -> Result<(), EngineError> {
+    let nv = m.raw.nv as usize;
+    let parent = m.dof_parentid();
+    rownnz[..nv].fill(0);
+    for i in (0..nv).rev() {
+        rownnz[i] += 1;
+        let mut j = parent[i];
+        while j >= 0 {
+            rownnz[i] += 1;
+            rownnz[j as usize] += 1;
+            j = parent[j as usize];
+        }
+    }
+    if nv > 0 {
+        rowadr[0] = 0;
+    }
+    for i in 1..nv {
+        rowadr[i] = rowadr[i - 1] + rownnz[i - 1];
+    }
+    let remaining = &mut scratch[..nv];
+    remaining.copy_from_slice(&rownnz[..nv]);
+    for i in (0..nv).rev() {
+        remaining[i] -= 1;
+        colind[(rowadr[i] + remaining[i]) as usize] = i as i32;
+        let mut j = parent[i];
+        while j >= 0 {
+            let ju = j as usize;
+            remaining[i] -= 1;
+            colind[(rowadr[i] + remaining[i]) as usize] = j;
+            remaining[ju] -= 1;
+            colind[(rowadr[ju] + remaining[ju]) as usize] = i as i32;
+            j = parent[ju];
+        }
+    }
+    if remaining.iter().any(|&r| r != 0) {
+        return Err(EngineError(
+            "Error in mj_makeMSparse: unexpected remaining".into(),
+        ));
+    }
+    Ok(())
+}
+
+/// dst = qM on the structure of `make_m_sparse` (mj_setMSparse); `scratch` needs nv ints.
+pub fn set_m_sparse(
+    m: &Model,
+    qm: &[f64],
+    dst: &mut [f64],
+    rownnz: &[i32],
+    rowadr: &[i32],
+    scratch: &mut [i32],
+) {
+    let nv = m.raw.nv as usize;
+    let parent = m.dof_parentid();
+    let remaining = &mut scratch[..nv];
+    remaining.copy_from_slice(&rownnz[..nv]);
+    for i in (0..nv).rev() {
+        let mut adr = m.dof_Madr()[i] as usize;
+        remaining[i] -= 1;
+        dst[(rowadr[i] + remaining[i]) as usize] = qm[adr];
+        adr += 1;
+        let mut j = parent[i];
+        while j >= 0 {
+            let ju = j as usize;
+            remaining[i] -= 1;
+            dst[(rowadr[i] + remaining[i]) as usize] = qm[adr];
+            remaining[ju] -= 1;
+            dst[(rowadr[ju] + remaining[ju]) as usize] = qm[adr];
+            adr += 1;
+            j = parent[ju];
+        }
+    }
+}
+
+/// Integrator implicit in velocity: (M - h*qDeriv) qacc = qfrc (mj_implicitSkip).
+pub fn implicit(m: &Model, d: &mut Data, skipfactor: bool) -> Result<(), EngineError> {
+    let nv = m.raw.nv as usize;
+    let nd = m.raw.nD as usize;
+    let qfrc = d.arena.alloc(nv)?;
+    let qacc = d.arena.alloc(nv)?;
+    if !skipfactor {
+        let scratch = d.arena.alloc_int(nv)?;
+        make_m_sparse(m, d.D_rownnz, d.D_rowadr, d.D_colind, scratch)?;
+        smooth_vel(m, d)?;
+        set_m_sparse(m, d.qM, d.qLU, d.D_rownnz, d.D_rowadr, scratch);
+        add_to_scl(&mut d.qLU[..nd], &d.qDeriv[..nd], -m.raw.opt.timestep);
+        factor_lu_sparse(d.qLU, nv, scratch, d.D_rownnz, d.D_rowadr, d.D_colind)
+            .map_err(|e| EngineError(e.into()))?;
+    }
+    for i in 0..nv {
+        qfrc[i] = d.qfrc_smooth[i] + d.qfrc_constraint[i];
+    }
+    solve_lu_sparse(qacc, d.qLU, qfrc, nv, d.D_rownnz, d.D_rowadr, d.D_colind)
+        .map_err(|e| EngineError(e.into()))?;
+    let act_dot = d.arena.alloc(d.act_dot.len())?;
+    act_dot.copy_from_slice(d.act_dot);
+    advance(m, d, act_dot, qacc, None);
     Ok(())
 }
