@@ -278,14 +278,31 @@ inline void check_inverse(const mjModel* m, mjData* d, const Inputs& in, Writer&
   }
 }
 
-// Post-solve quantities at the reference's forward results: mj_subtreeVel,
-// mj_rnePostConstraint, and mj_objectVelocity / mj_objectAcceleration of every object with a
-// frame, global and local.
+// The reference's contacts at state k (dump_contacts), which load_data leaves out.
+inline void load_contacts(mjData* d, const Reader& r, const std::string& inst) {
+  const size_t nreal = offsetof(mjContact, dim) / sizeof(mjtNum);
+  for (int c = 0; c < d->ncon; c++) {
+    mjContact* con = d->contact + c;
+    std::string ci = inst + "." + std::to_string(c);
+    r.copy("contact.real#" + ci, &con->dist, nreal * sizeof(mjtNum));
+    r.copy("contact.int#" + ci, &con->dim, 5 * sizeof(int));
+  }
+}
+
+// Post-solve quantities at the reference's forward results, contacts included:
+// mj_contactForce, mj_subtreeVel, mj_rnePostConstraint, and mj_objectVelocity /
+// mj_objectAcceleration of every object with a frame, global and local.
 inline void check_objects(const mjModel* m, mjData* d, const Inputs& in, Writer& w) {
   const int types[][2] = {{mjOBJ_BODY, m->nbody}, {mjOBJ_XBODY, m->nbody}, {mjOBJ_GEOM, m->ngeom},
                           {mjOBJ_SITE, m->nsite}, {mjOBJ_CAMERA, m->ncam}};
   for (int k = 0; k < in.nstate; k++) {
     at_state(m, d, in, k, true);
+    load_contacts(d, *in.post, I(k));
+    for (int c = 0; c < d->ncon; c++) {
+      mjtNum f[6];
+      mj_contactForce(m, d, c, f);
+      w.d("contactForce#" + I(k, c), f, 6);
+    }
     mj_subtreeVel(m, d);
     mj_rnePostConstraint(m, d);
     std::string i = I(k);
