@@ -167,7 +167,7 @@ pub unsafe extern "C" fn mj_camlight(m: *const mjModel, d: *mut mjData) {
 
 #[no_mangle]
 pub unsafe extern "C" fn mj_tendon(m: *const mjModel, d: *mut mjData) {
-    run("mj_tendon", (), m, d, |m, _d| forward::tendon(m))
+    run("mj_tendon", (), m, d, forward::tendon)
 }
 
 #[no_mangle]

@@ -5,7 +5,7 @@ use crate::abi::view::ModelMut;
 use crate::abi::*;
 use crate::capi::errmem;
 use crate::compiler;
-use crate::xml::{reader, schema, tree};
+use crate::xml::{include, reader, schema, tree};
 use std::os::raw::{c_char, c_int};
 
 /// Copies `msg` into the caller's error buffer (truncated, NUL-terminated).
@@ -18,30 +18,32 @@ unsafe fn set_error(error: *mut c_char, error_sz: c_int, msg: &str) {
     *error.add(n) = 0;
 }
 
-/// File contents from the VFS (by exact name) or from disk.
+/// File contents from the VFS (name without its path, as mj_findFileVFS matches) or from disk.
 unsafe fn load_text(filename: &str, vfs: *const mjVFS) -> Result<Vec<u8>, String> {
     if !vfs.is_null() {
-        let v = &*vfs;
-        let n = (v.nfile.max(0) as usize).min(v.filename.len());
-        for i in 0..n {
-            let name = std::ffi::CStr::from_ptr(v.filename[i].as_ptr()).to_string_lossy();
-            if name == filename && !v.filedata[i].is_null() {
-                let size = v.filesize[i].max(0) as usize;
-                return Ok(std::slice::from_raw_parts(v.filedata[i] as *const u8, size).to_vec());
+        if let Ok(cname) = std::ffi::CString::new(filename) {
+            let id = crate::capi::io::mj_findFileVFS(vfs, cname.as_ptr());
+            let v = &*vfs;
+            if id >= 0 && (id as usize) < v.filedata.len() && !v.filedata[id as usize].is_null() {
+                let size = v.filesize[id as usize].max(0) as usize;
+                return Ok(
+                    std::slice::from_raw_parts(v.filedata[id as usize] as *const u8, size).to_vec(),
+                );
             }
         }
     }
     std::fs::read(filename).map_err(|_| {
-        format!("XML parse error 3:\nError=XML_ERROR_FILE_NOT_FOUND ErrorID=3 (0x3) Line number=0: filename={filename}\n")
+        format!(
+            "XML parse error 3:\nError=XML_ERROR_FILE_NOT_FOUND ErrorID=3 (0x3) Line number=0: filename={filename}\n"
+        )
     })
 }
 
-/// XML text to a model description.
-fn parse(bytes: &[u8]) -> Result<compiler::spec::ModelSpec, String> {
-    let text = std::str::from_utf8(bytes)
-        .map_err(|e| format!("XML parse error: invalid UTF-8 ({e})\n"))?;
-    let text = text.trim_end_matches('\0');
-    let root = tree::parse(text)?;
+/// The model file (and its includes) to a model description.
+unsafe fn parse(fname: &str, vfs: *const mjVFS) -> Result<compiler::spec::ModelSpec, String> {
+    let bytes = load_text(fname, vfs)?;
+    let text = String::from_utf8_lossy(&bytes);
+    let mut root = tree::parse(text.trim_end_matches('\0'))?;
     if root.name.eq_ignore_ascii_case("robot") {
         return Err("XML Error: URDF models are not supported by this loader yet".into());
     }
@@ -51,18 +53,14 @@ fn parse(bytes: &[u8]) -> Result<compiler::spec::ModelSpec, String> {
             root.name
         ));
     }
-    fn find_include(e: &tree::Element) -> Option<&tree::Element> {
-        if e.name == "include" {
-            return Some(e);
-        }
-        e.children.iter().find_map(find_include)
-    }
-    if let Some(inc) = find_include(&root) {
-        return Err(reader::xerr(
-            inc,
-            "'include' is not supported by this MJCF reader yet",
-        ));
-    }
+    let mut included = vec![fname.to_string()];
+    let dir = include::file_dir(fname);
+    include::expand(
+        &mut root,
+        &dir,
+        &mut |f: &str| load_text(f, vfs),
+        &mut included,
+    )?;
     schema::check(&root)?;
     reader::read(&root)
 }
@@ -85,7 +83,7 @@ unsafe fn load(filename: *const c_char, vfs: *const mjVFS) -> Result<*mut mjMode
     let fname = std::ffi::CStr::from_ptr(filename)
         .to_string_lossy()
         .into_owned();
-    let spec = parse(&load_text(&fname, vfs)?)?;
+    let spec = parse(&fname, vfs)?;
     // from here on, as in 2.2.2's compiler, warnings go to the error buffer
     errmem::_mjPRIVATE__set_tls_warning_fn(Some(keep_warning));
     // SAFETY: all-zero bits are a valid mjModel header (null pointers, zero sizes).

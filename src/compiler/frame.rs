@@ -107,6 +107,35 @@ pub fn frame2quat(x: &[f64], y: &[f64], z: &[f64]) -> [f64; 4] {
     q
 }
 
+/// Conjugate quaternion.
+pub fn conj(q: &[f64; 4]) -> [f64; 4] {
+    [q[0], -q[1], -q[2], -q[3]]
+}
+
+/// mat * v for a row-major 3x3 matrix.
+pub fn mat_vec(mat: &[f64; 9], v: &[f64; 3]) -> [f64; 3] {
+    [
+        mat[0] * v[0] + mat[1] * v[1] + mat[2] * v[2],
+        mat[3] * v[0] + mat[4] * v[1] + mat[5] * v[2],
+        mat[6] * v[0] + mat[7] * v[1] + mat[8] * v[2],
+    ]
+}
+
+/// Global direction expressed in the frame with orientation `quat`.
+pub fn local_axis(v: &[f64; 3], quat: &[f64; 4]) -> [f64; 3] {
+    mat_vec(&quat2mat(&conj(quat)), v)
+}
+
+/// Global point expressed in the frame (pos, quat).
+pub fn local_pos(p: &[f64; 3], pos: &[f64; 3], quat: &[f64; 4]) -> [f64; 3] {
+    local_axis(&[p[0] - pos[0], p[1] - pos[1], p[2] - pos[2]], quat)
+}
+
+/// Rotation from `parent` to `child`.
+pub fn local_quat(child: &[f64; 4], parent: &[f64; 4]) -> [f64; 4] {
+    mulquat_unit(&conj(parent), child)
+}
+
 /// Full inertia (xx, yy, zz, xy, xz, yz) of a body with diagonal inertia `local` in frame `quat`.
 pub fn global_inertia(local: &[f64; 3], quat: &[f64; 4]) -> [f64; 6] {
     let m = quat2mat(quat);
@@ -254,6 +283,8 @@ pub fn eig3(mat: &[f64; 9]) -> ([f64; 3], [f64; 4]) {
         let j1 = j % 2;
         if eigval[j1] < eigval[j1 + 1] {
             eigval.swap(j1, j1 + 1);
+            // cos(pi/4) as 2.2.2 writes it (15 digits, not FRAC_1_SQRT_2)
+            #[allow(clippy::approx_constant)]
             let mut rot = [0.707106781186548, 0.0, 0.0, 0.0];
             rot[(j1 + 2) % 3 + 1] = rot[0];
             quat = mulquat(&quat, &rot);

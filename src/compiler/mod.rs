@@ -6,6 +6,9 @@
 pub mod frame;
 pub mod objects;
 pub mod spec;
+#[cfg(test)]
+mod tests;
+pub mod texture;
 mod tree;
 
 use crate::abi::view::{EngineError, ModelMut};

@@ -154,6 +154,106 @@ pub struct GeomOut {
     pub size: [f64; 3],
     pub mass: f64,
     pub inertia: [f64; 3],
+    /// geom_fluid: switch, 5 coefficients, virtual mass (3), virtual inertia (3)
+    pub fluid: [f64; 12],
+}
+
+/// Added-mass coefficient of an ellipsoid with semi-axes (dx, dy, dz) along x, by 15-point
+/// Gauss-Kronrod quadrature over l in [0, inf) mapped through l = x^3/(1-x)^2.
+fn added_mass_kappa(dx: f64, dy: f64, dz: f64) -> f64 {
+    const W: [f64; 15] = [
+        0.01146766, 0.03154605, 0.05239501, 0.07032663, 0.08450236, 0.09517529, 0.10221647,
+        0.10474107, 0.10221647, 0.09517529, 0.08450236, 0.07032663, 0.05239501, 0.03154605,
+        0.01146766,
+    ];
+    const L: [f64; 15] = [
+        7.865151709349917e-08,
+        1.7347976913907274e-05,
+        0.0003548008144506193,
+        0.002846636252924549,
+        0.014094260903596077,
+        0.053063261727396636,
+        0.17041978741317773,
+        0.5,
+        1.4036301548686991,
+        3.9353484827022642,
+        11.644841677041734,
+        39.53187807410903,
+        177.5711362220801,
+        1429.4772912937397,
+        54087.416549217705,
+    ];
+    const D: [f64; 15] = [
+        5.538677720489877e-05,
+        0.002080868285293228,
+        0.016514126520723166,
+        0.07261900344370877,
+        0.23985243401862602,
+        0.6868318249020725,
+        1.8551129519182894,
+        5.0,
+        14.060031152313941,
+        43.28941239611009,
+        156.58546376397112,
+        747.9826085305024,
+        5827.4042950027115,
+        116754.0197944512,
+        25482945.327264845,
+    ];
+    let (ix, iy, iz) = (1.0 / (dx * dx), 1.0 / (dy * dy), 1.0 / (dz * dz));
+    let scale = (dx * dx * dx * dy * dz).powf(0.4);
+    let mut kappa = 0.0;
+    for i in 0..15 {
+        let lambda = scale * L[i];
+        let denom = (1.0 + lambda * ix)
+            * ((1.0 + lambda * ix) * (1.0 + lambda * iy) * (1.0 + lambda * iz)).sqrt();
+        kappa += scale * D[i] / denom * W[i];
+    }
+    kappa * ix
+}
+
+/// C++ std::max(MINVAL, x).
+fn at_least_minval(x: f64) -> f64 {
+    if MINVAL < x {
+        x
+    } else {
+        MINVAL
+    }
+}
+
+/// geom_fluid of an ellipsoid-model geom.
+fn fluid_coefs(kind: i32, size: &[f64; 3], coefs: &[f64; 5]) -> [f64; 12] {
+    let (dx, dy, dz) = match kind {
+        SPHERE => (size[0], size[0], size[0]),
+        CAPSULE => (size[0], size[0], size[1] + size[0]),
+        CYLINDER => (size[0], size[0], size[1]),
+        _ => (size[0], size[1], size[2]),
+    };
+    let volume = 4.0 / 3.0 * std::f64::consts::PI * dx * dy * dz;
+    let kx = added_mass_kappa(dx, dy, dz);
+    let ky = added_mass_kappa(dy, dz, dx);
+    let kz = added_mass_kappa(dz, dx, dy);
+    let sq = |v: f64| v * v;
+    let ixf = sq(dy * dy - dz * dz) * (kz - ky).abs()
+        / at_least_minval((2.0 * (dy * dy - dz * dz) + (dy * dy + dz * dz) * (ky - kz)).abs());
+    let iyf = sq(dz * dz - dx * dx) * (kx - kz).abs()
+        / at_least_minval((2.0 * (dz * dz - dx * dx) + (dz * dz + dx * dx) * (kz - kx)).abs());
+    let izf = sq(dx * dx - dy * dy) * (ky - kx).abs()
+        / at_least_minval((2.0 * (dx * dx - dy * dy) + (dx * dx + dy * dy) * (kx - ky)).abs());
+    [
+        1.0,
+        coefs[0],
+        coefs[1],
+        coefs[2],
+        coefs[3],
+        coefs[4],
+        volume * kx / at_least_minval(2.0 - kx),
+        volume * ky / at_least_minval(2.0 - ky),
+        volume * kz / at_least_minval(2.0 - kz),
+        volume * ixf / 5.0,
+        volume * iyf / 5.0,
+        volume * izf / 5.0,
+    ]
 }
 
 fn volume(kind: i32, s: &[f64; 3]) -> f64 {
@@ -214,11 +314,13 @@ pub fn rbound(kind: i32, s: &[f64; 3]) -> f64 {
     }
 }
 
+/// Compiles a geom; `hfield` is the size of its height field, if it names one.
 pub fn compile_geom(
     g: &Geom,
     id: usize,
     static_body: bool,
     infer: bool,
+    hfield: Option<[f64; 4]>,
     s: &Settings,
 ) -> Result<GeomOut, String> {
     let name = g.name.as_str();
@@ -227,19 +329,18 @@ pub fn compile_geom(
             "geom attribute '{a}' is not supported by this compiler yet"
         ));
     }
-    if g.fluid_switch {
-        return Err("fluidshape is not supported by this compiler yet".into());
-    }
     if ![1, 3, 4, 6].contains(&g.condim) {
         return Err(format!("invalid condim in geom '{name}' (id = {id})"));
     }
-    if g.kind == 1 || g.kind == 7 {
+    if g.kind == 7 {
+        return Err("mesh geoms are not supported by this compiler yet".into());
+    }
+    if (g.kind == 1) != hfield.is_some() {
         return Err(format!(
-            "{} geoms are not supported by this compiler yet",
-            if g.kind == 1 { "hfield" } else { "mesh" }
+            "hfield geom '{name}' (id = {id}) must have valid hfieldid"
         ));
     }
-    if g.kind == PLANE && !static_body {
+    if (g.kind == PLANE || g.kind == 1) && !static_body {
         return Err(format!(
             "plane and hfield only allowed in static bodies: geom '{name}' (id = {id})"
         ));
@@ -266,6 +367,9 @@ pub fn compile_geom(
             .map_err(|e| format!("alternative specification error '{e}' in geom {id}"))?;
     }
     check_size(&size, g.kind, "geom", name, id)?;
+    if let Some(hf) = hfield {
+        size = [hf[0], hf[1], 0.5 * (hf[2] + hf[3])];
+    }
     let (mut mass, mut inertia) = (0.0, [0.0; 3]);
     if infer {
         let mut density = g.density;
@@ -287,12 +391,18 @@ pub fn compile_geom(
             ));
         }
     }
+    let fluid = if g.fluid_switch {
+        fluid_coefs(g.kind, &size, &g.fluid_coefs)
+    } else {
+        [0.0; 12]
+    };
     Ok(GeomOut {
         pos,
         quat,
         size,
         mass,
         inertia,
+        fluid,
     })
 }
 
@@ -405,11 +515,11 @@ pub fn limited_msg(entity: &str, attr: &str) -> String {
     )
 }
 
-/// Inertial frame of a body from its selected geoms: (ipos, iquat, mass, inertia).
-pub fn geom_frame(
-    geoms: &[&GeomOut],
-    s: &Settings,
-) -> Result<Option<([f64; 3], [f64; 4], f64, [f64; 3])>, CError> {
+/// Inertial frame of a body: position, orientation, mass, principal inertia.
+pub type Inertial = ([f64; 3], [f64; 4], f64, [f64; 3]);
+
+/// Inertial frame of a body from its selected geoms.
+pub fn geom_frame(geoms: &[&GeomOut], s: &Settings) -> Result<Option<Inertial>, CError> {
     match geoms.len() {
         0 => Ok(None),
         1 => Ok(Some((
@@ -423,8 +533,8 @@ pub fn geom_frame(
             let mut com = [0.0; 3];
             for g in geoms {
                 mass += g.mass;
-                for k in 0..3 {
-                    com[k] += g.mass * g.pos[k];
+                for (c, p) in com.iter_mut().zip(g.pos) {
+                    *c += g.mass * p;
                 }
             }
             if mass < MINVAL {

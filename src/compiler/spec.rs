@@ -133,6 +133,8 @@ pub struct Geom {
     pub fluid_coefs: [f64; 5],
     /// Attributes the compiler does not handle yet (material, mesh, hfield, shellinertia).
     pub unsupported: Option<&'static str>,
+    pub material: String,
+    pub hfield: String,
     pub user: Vec<f64>,
 }
 
@@ -164,6 +166,8 @@ impl Default for Geom {
             fluid_switch: false,
             fluid_coefs: [0.5, 0.25, 1.5, 1.0, 1.0],
             unsupported: None,
+            material: String::new(),
+            hfield: String::new(),
             user: Vec::new(),
         }
     }
@@ -182,6 +186,7 @@ pub struct Site {
     pub fromto: [f64; 6],
     pub alt: Alt,
     pub unsupported: Option<&'static str>,
+    pub material: String,
     pub user: Vec<f64>,
 }
 
@@ -199,6 +204,7 @@ impl Default for Site {
             fromto: [NAN; 6],
             alt: Alt::default(),
             unsupported: None,
+            material: String::new(),
             user: Vec::new(),
         }
     }
@@ -380,6 +386,207 @@ pub struct Exclude {
     pub body2: String,
 }
 
+/// A sensor (`<sensor>` child); types and object kinds as mjtSensor / mjtObj values.
+#[derive(Debug, Clone, Default)]
+pub struct Sensor {
+    pub name: String,
+    pub kind: i32,
+    pub objtype: i32,
+    pub objname: String,
+    pub reftype: i32,
+    pub refname: String,
+    pub cutoff: f64,
+    pub noise: f64,
+    pub user: Vec<f64>,
+    /// user sensors only
+    pub dim: i32,
+    pub needstage: i32,
+    pub datatype: i32,
+}
+
+/// Equality constraint; `kind` as mjtEq.
+#[derive(Debug, Clone)]
+pub struct Equality {
+    pub name: String,
+    pub line: Line,
+    pub kind: i32,
+    pub name1: String,
+    pub name2: String,
+    pub active: bool,
+    pub solref: [f64; 2],
+    pub solimp: [f64; 5],
+    pub data: [f64; 11],
+}
+
+impl Default for Equality {
+    fn default() -> Self {
+        let mut data = [0.0; 11];
+        data[1] = 1.0;
+        data[10] = 1.0;
+        Equality {
+            name: String::new(),
+            line: -1,
+            kind: 0,
+            name1: String::new(),
+            name2: String::new(),
+            active: true,
+            solref: default_solref(),
+            solimp: default_solimp(),
+            data,
+        }
+    }
+}
+
+/// One element of a tendon path; `kind` as mjtWrap (sphere stands for any geom until compiled).
+#[derive(Debug, Clone, Default)]
+pub struct Wrap {
+    pub kind: i32,
+    pub name: String,
+    pub sidesite: String,
+    pub prm: f64,
+    pub line: Line,
+}
+
+#[derive(Debug, Clone)]
+pub struct Tendon {
+    pub name: String,
+    pub line: Line,
+    pub group: i32,
+    pub material: String,
+    pub limited: i32,
+    pub width: f64,
+    pub solref_limit: [f64; 2],
+    pub solimp_limit: [f64; 5],
+    pub solref_friction: [f64; 2],
+    pub solimp_friction: [f64; 5],
+    pub range: [f64; 2],
+    pub margin: f64,
+    pub stiffness: f64,
+    pub damping: f64,
+    pub frictionloss: f64,
+    pub springlength: f64,
+    pub rgba: [f32; 4],
+    pub user: Vec<f64>,
+    pub path: Vec<Wrap>,
+}
+
+impl Default for Tendon {
+    fn default() -> Self {
+        Tendon {
+            name: String::new(),
+            line: -1,
+            group: 0,
+            material: String::new(),
+            limited: 2,
+            width: 0.003,
+            solref_limit: default_solref(),
+            solimp_limit: default_solimp(),
+            solref_friction: default_solref(),
+            solimp_friction: default_solimp(),
+            range: [0.0; 2],
+            margin: 0.0,
+            stiffness: 0.0,
+            damping: 0.0,
+            frictionloss: 0.0,
+            springlength: -1.0,
+            rgba: [0.5, 0.5, 0.5, 1.0],
+            user: Vec::new(),
+            path: Vec::new(),
+        }
+    }
+}
+
+/// `<hfield>` given by size and grid (elevation from files is not supported yet).
+#[derive(Debug, Clone, Default)]
+pub struct HField {
+    pub name: String,
+    pub line: Line,
+    pub file: String,
+    pub nrow: i32,
+    pub ncol: i32,
+    pub size: [f64; 4],
+}
+
+/// `<texture>`; `kind` 0 2d, 1 cube, 2 skybox; `builtin` none, gradient, checker, flat;
+/// `mark` none, edge, cross, random.
+#[derive(Debug, Clone)]
+pub struct Texture {
+    pub name: String,
+    pub line: Line,
+    pub kind: i32,
+    pub builtin: i32,
+    pub mark: i32,
+    pub rgb1: [f64; 3],
+    pub rgb2: [f64; 3],
+    pub markrgb: [f64; 3],
+    pub random: f64,
+    pub width: i32,
+    pub height: i32,
+    /// file names (single or per cube face): not supported yet
+    pub files: bool,
+}
+
+impl Default for Texture {
+    fn default() -> Self {
+        Texture {
+            name: String::new(),
+            line: -1,
+            kind: 1,
+            builtin: 0,
+            mark: 0,
+            rgb1: [0.8; 3],
+            rgb2: [0.5; 3],
+            markrgb: [0.0; 3],
+            random: 0.01,
+            width: 0,
+            height: 0,
+            files: false,
+        }
+    }
+}
+
+#[derive(Debug, Clone)]
+pub struct Material {
+    pub name: String,
+    pub line: Line,
+    pub texture: String,
+    pub texuniform: bool,
+    pub texrepeat: [f32; 2],
+    pub emission: f32,
+    pub specular: f32,
+    pub shininess: f32,
+    pub reflectance: f32,
+    pub rgba: [f32; 4],
+}
+
+impl Default for Material {
+    fn default() -> Self {
+        Material {
+            name: String::new(),
+            line: -1,
+            texture: String::new(),
+            texuniform: false,
+            texrepeat: [1.0; 2],
+            emission: 0.0,
+            specular: 0.5,
+            shininess: 0.5,
+            reflectance: 0.0,
+            rgba: [1.0; 4],
+        }
+    }
+}
+
+/// `<custom>` entries: numeric (name, size, data), text (name, data), tuple (name, elements).
+#[derive(Debug, Clone, Default)]
+pub struct Custom {
+    pub numerics: Vec<(String, Line, Vec<f64>)>,
+    pub texts: Vec<(String, Line, String)>,
+    pub tuples: Vec<(String, Line, Vec<TupleElement>)>,
+}
+
+/// One tuple element: mjtObj, object name, parameter.
+pub type TupleElement = (i32, String, f64);
+
 /// A default class: the values new elements of each kind start from.
 #[derive(Debug, Clone, Default)]
 pub struct DefaultClass {
@@ -391,6 +598,9 @@ pub struct DefaultClass {
     pub camera: Camera,
     pub light: Light,
     pub pair: Pair,
+    pub material: Material,
+    pub equality: Equality,
+    pub tendon: Tendon,
     pub actuator: Actuator,
 }
 
@@ -518,8 +728,15 @@ pub struct ModelSpec {
     pub defaults: Vec<DefaultClass>,
     pub world: Body,
     pub actuators: Vec<Actuator>,
+    pub hfields: Vec<HField>,
+    pub textures: Vec<Texture>,
+    pub materials: Vec<Material>,
     pub pairs: Vec<Pair>,
     pub excludes: Vec<Exclude>,
+    pub equalities: Vec<Equality>,
+    pub tendons: Vec<Tendon>,
+    pub sensors: Vec<Sensor>,
+    pub custom: Custom,
     pub keys: Vec<Key>,
 }
 
@@ -550,8 +767,15 @@ impl Default for ModelSpec {
             }],
             world,
             actuators: Vec::new(),
+            hfields: Vec::new(),
+            textures: Vec::new(),
+            materials: Vec::new(),
             pairs: Vec::new(),
             excludes: Vec::new(),
+            equalities: Vec::new(),
+            tendons: Vec::new(),
+            sensors: Vec::new(),
+            custom: Custom::default(),
             keys: Vec::new(),
         }
     }

@@ -25,6 +25,9 @@ struct FBody {
     iquat: [f64; 4],
     mass: f64,
     inertia: [f64; 3],
+    /// body frame in world coordinates (differs from pos/quat with coordinate="global")
+    gpos: [f64; 3],
+    gquat: [f64; 4],
 }
 
 struct FGeom {
@@ -63,7 +66,23 @@ pub struct Compiled {
     pairs: Vec<(Pair, [i32; 2], i32)>,
     /// (name, body signature), sorted by signature
     excludes: Vec<(String, i32)>,
+    /// (constraint, object ids)
+    equalities: Vec<(Equality, [i32; 2])>,
+    tendons: Vec<CTendon>,
+    /// (mjtTexture, width, height, RGB bytes)
+    textures: Vec<(i32, i32, i32, Vec<u8>)>,
+    texture_names: Vec<String>,
+    hfields: Vec<HField>,
+    geom_hfield: Vec<Option<usize>>,
+    materials: Vec<Material>,
+    mat_texid: Vec<i32>,
+    geom_matid: Vec<i32>,
+    site_matid: Vec<i32>,
+    tendon_matid: Vec<i32>,
     actuators: Vec<Actuator>,
+    sensors: Vec<CSensor>,
+    custom: Custom,
+    tuple_ids: Vec<Vec<i32>>,
     keys: Vec<Key>,
     trnid: Vec<[i32; 2]>,
     nuser: [usize; 8],
@@ -108,6 +127,8 @@ fn flatten(
         iquat: spec.iquat,
         mass: spec.mass,
         inertia: spec.inertia,
+        gpos: [0.0; 3],
+        gquat: [1.0, 0.0, 0.0, 0.0],
         spec,
     };
     for g in std::mem::take(&mut fb.spec.geoms) {
@@ -169,11 +190,6 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
         degree: opts.degree,
         eulerseq: &opts.eulerseq,
     };
-    if opts.global {
-        return Err(CError::msg(
-            "coordinate=\"global\" is not supported by this compiler yet",
-        ));
-    }
 
     // lists in tree order
     let mut bodies = Vec::new();
@@ -218,15 +234,40 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
         lights.iter().map(|l| (l.0.name.as_str(), l.0.line)),
         "light",
     )?;
+    check_names(
+        spec.textures.iter().map(|t| (t.name.as_str(), t.line)),
+        "texture",
+    )?;
+    check_names(
+        spec.materials.iter().map(|m| (m.name.as_str(), m.line)),
+        "material",
+    )?;
     check_names(spec.pairs.iter().map(|p| (p.name.as_str(), p.line)), "pair")?;
     check_names(
         spec.excludes.iter().map(|e| (e.name.as_str(), e.line)),
         "exclude",
     )?;
     check_names(
+        spec.equalities.iter().map(|e| (e.name.as_str(), e.line)),
+        "equality",
+    )?;
+    check_names(
+        spec.tendons.iter().map(|t| (t.name.as_str(), t.line)),
+        "tendon",
+    )?;
+    check_names(
         actuators.iter().map(|a| (a.name.as_str(), a.line)),
         "actuator",
     )?;
+    let sensors = spec.sensors;
+    check_names(sensors.iter().map(|s| (s.name.as_str(), -1)), "sensor")?;
+    let custom = spec.custom;
+    check_names(
+        custom.numerics.iter().map(|x| (x.0.as_str(), x.1)),
+        "numeric",
+    )?;
+    check_names(custom.texts.iter().map(|x| (x.0.as_str(), x.1)), "text")?;
+    check_names(custom.tuples.iter().map(|x| (x.0.as_str(), x.1)), "tuple")?;
     check_names(keys.iter().map(|k| (k.name.as_str(), -1)), "key")?;
 
     let n = &spec.nuser;
@@ -236,10 +277,121 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
         user_len(gspecs.iter().map(|g| g.user.len()), n[2]),
         user_len(sspecs.iter().map(|s| s.0.user.len()), n[3]),
         user_len(cameras.iter().map(|c| c.0.user.len()), n[4]),
-        user_len(std::iter::empty(), n[5]),
+        user_len(spec.tendons.iter().map(|t| t.user.len()), n[5]),
         user_len(actuators.iter().map(|a| a.user.len()), n[6]),
-        user_len(std::iter::empty(), n[7]),
+        user_len(sensors.iter().map(|s| s.user.len()), n[7]),
     ];
+
+    // asset names, then references to assets
+    for (id, t) in spec.textures.iter().enumerate() {
+        if t.name.is_empty() && t.kind != 2 && !t.files {
+            return Err(CError::at(
+                "empty name in texture".into(),
+                &t.name,
+                id,
+                t.line,
+            ));
+        }
+    }
+    for (id, m) in spec.materials.iter().enumerate() {
+        if m.name.is_empty() {
+            return Err(CError::at(
+                "empty name in material".into(),
+                &m.name,
+                id,
+                m.line,
+            ));
+        }
+    }
+    for (id, hf) in spec.hfields.iter().enumerate() {
+        if hf.name.is_empty() {
+            return Err(CError::at(
+                "empty name in height field".into(),
+                &hf.name,
+                id,
+                hf.line,
+            ));
+        }
+    }
+    let mut geom_hfield: Vec<Option<usize>> = vec![None; gspecs.len()];
+    for (i, g) in gspecs.iter().enumerate() {
+        if !g.hfield.is_empty() {
+            let h = spec
+                .hfields
+                .iter()
+                .position(|h| h.name == g.hfield)
+                .ok_or_else(|| {
+                    CError::at(
+                        format!("hfield '{}' not found in geom {i}", g.hfield),
+                        &g.name,
+                        i,
+                        g.line,
+                    )
+                })?;
+            geom_hfield[i] = Some(h);
+        }
+    }
+    let find_mat = |n: &str| spec.materials.iter().position(|m| m.name == n);
+    let mut geom_matid = vec![-1; gspecs.len()];
+    for (i, g) in gspecs.iter().enumerate() {
+        if !g.material.is_empty() {
+            let m = find_mat(&g.material).ok_or_else(|| {
+                CError::at(
+                    format!("material '{}' not found in geom {i}", g.material),
+                    &g.name,
+                    i,
+                    g.line,
+                )
+            })?;
+            geom_matid[i] = m as i32;
+        }
+    }
+    let mut site_matid = vec![-1; sspecs.len()];
+    for (i, (s, _)) in sspecs.iter().enumerate() {
+        if !s.material.is_empty() {
+            let m = find_mat(&s.material).ok_or_else(|| {
+                CError::at(
+                    format!("material '{}' not found in site {i}", s.material),
+                    &s.name,
+                    i,
+                    s.line,
+                )
+            })?;
+            site_matid[i] = m as i32;
+        }
+    }
+    let mut tendon_matid = vec![-1; spec.tendons.len()];
+    for (i, t) in spec.tendons.iter().enumerate() {
+        if !t.material.is_empty() {
+            let m = find_mat(&t.material).ok_or_else(|| {
+                CError::at(
+                    format!("material '{}' not found in tendon {i}", t.material),
+                    &t.name,
+                    i,
+                    t.line,
+                )
+            })?;
+            tendon_matid[i] = m as i32;
+        }
+    }
+    let mut mat_texid = vec![-1; spec.materials.len()];
+    for (i, m) in spec.materials.iter().enumerate() {
+        if !m.texture.is_empty() {
+            let t = spec
+                .textures
+                .iter()
+                .position(|t| t.name == m.texture)
+                .ok_or_else(|| {
+                    CError::at(
+                        format!("texture '{}' not found in material {i}", m.texture),
+                        &m.name,
+                        i,
+                        m.line,
+                    )
+                })?;
+            mat_texid[i] = t as i32;
+        }
+    }
 
     // bodies, with their geoms, joints and sites
     let mut geoms: Vec<Option<FGeom>> = (0..gspecs.len()).map(|_| None).collect();
@@ -253,7 +405,7 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
             )));
         }
         let b = &mut bodies[i];
-        if !defined(b.pos[0]) {
+        if !defined(b.pos[0]) && !opts.global {
             b.pos = [0.0; 3];
         }
         normalize(&mut b.quat);
@@ -293,7 +445,8 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
                 );
                 return Err(CError::at(m, &g.name, gid, g.line));
             }
-            let out = compile_geom(g, gid, b.weldid == 0, infer, &settings)
+            let hf = geom_hfield[gid].map(|h| spec.hfields[h].size);
+            let out = compile_geom(g, gid, b.weldid == 0, infer, hf, &settings)
                 .map_err(|m| CError::at(m, &g.name, gid, g.line))?;
             geoms[gid] = Some(FGeom {
                 spec: g.clone(),
@@ -318,9 +471,14 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
                 (b.ipos, b.iquat, b.mass, b.inertia) = (ipos, iquat, mass, inertia);
             }
         }
-        if !defined(b.ipos[0]) {
+        if !defined(b.ipos[0]) && !defined(b.pos[0]) {
+            return Err(berr("body pos and ipos are both undefined".into()));
+        } else if !defined(b.ipos[0]) {
             b.ipos = b.pos;
             b.iquat = b.quat;
+        } else if !defined(b.pos[0]) {
+            b.pos = b.ipos;
+            b.quat = b.iquat;
         }
         if i > 0 {
             b.mass = b.mass.max(opts.boundmass);
@@ -397,9 +555,121 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
         for lid in bodies[i].lights.clone() {
             compile_light(&mut lights[lid].0, lid, i, &bodies)?;
         }
+
+        // frames so far are in world coordinates when coordinate="global": make them local
+        let b = &mut bodies[i];
+        (b.gpos, b.gquat) = (b.pos, b.quat);
+        if opts.global && i > 0 {
+            let (bp, bq) = (b.pos, b.quat);
+            let (ip, iq) = (b.ipos, b.iquat);
+            b.ipos = local_pos(&ip, &bp, &bq);
+            b.iquat = local_quat(&iq, &bq);
+            let (pp, pq) = (
+                bodies[bodies[i].parent].gpos,
+                bodies[bodies[i].parent].gquat,
+            );
+            let b = &mut bodies[i];
+            b.pos = local_pos(&bp, &pp, &pq);
+            b.quat = local_quat(&bq, &pq);
+        }
+        if opts.global {
+            let (bp, bq) = (bodies[i].gpos, bodies[i].gquat);
+            for &g in &bodies[i].geoms {
+                if let Some(g) = geoms[g].as_mut() {
+                    g.out.pos = local_pos(&g.out.pos, &bp, &bq);
+                    g.out.quat = local_quat(&g.out.quat, &bq);
+                }
+            }
+            for &j in &bodies[i].joints {
+                let j = &mut joints[j].spec;
+                if j.kind != JointType::Free {
+                    j.pos = local_pos(&j.pos, &bp, &bq);
+                }
+                j.axis = local_axis(&j.axis, &bq);
+            }
+            for &s in &bodies[i].sites {
+                if let Some(s) = sites[s].as_mut() {
+                    s.out.pos = local_pos(&s.out.pos, &bp, &bq);
+                    s.out.quat = local_quat(&s.out.quat, &bq);
+                }
+            }
+            for &c in &bodies[i].cameras {
+                let c = &mut cameras[c].0;
+                c.pos = local_pos(&c.pos, &bp, &bq);
+                c.quat = local_quat(&c.quat, &bq);
+            }
+            for &l in &bodies[i].lights {
+                let l = &mut lights[l].0;
+                l.pos = local_pos(&l.pos, &bp, &bq);
+                // 2.2.2 rotates the direction by the conjugate of the light's local rotation
+                let lq = local_quat(&[1.0, 0.0, 0.0, 0.0], &bq);
+                l.dir = mat_vec(&quat2mat(&conj(&lq)), &l.dir);
+            }
+        }
     }
     let geoms: Vec<FGeom> = geoms.into_iter().flatten().collect();
     let sites: Vec<FSite> = sites.into_iter().flatten().collect();
+
+    // height fields: elevation is all zero without a file
+    for (id, hf) in spec.hfields.iter().enumerate() {
+        let name = &hf.name;
+        let err = |m: String| CError::at(m, name, id, hf.line);
+        if hf.size.iter().any(|&s| s <= 0.0) {
+            return Err(err(format!(
+                "size parameter is not positive in hfield '{name}' (id = {id})"
+            )));
+        }
+        if !hf.file.is_empty() {
+            return Err(err(
+                "height fields from files are not supported by this compiler yet".into(),
+            ));
+        }
+        if hf.nrow < 1 || hf.ncol < 1 {
+            return Err(err(format!("hfield '{name}' (id = {id}) not specified")));
+        }
+    }
+    let hfields = spec.hfields;
+
+    // textures (random marks draw from the C generator seeded as 2.2.2 seeds it)
+    let mut rng = super::texture::CRand::new(123);
+    let mut textures = Vec::new();
+    for (id, t) in spec.textures.iter().enumerate() {
+        let err = |m: String| CError::at(m, &t.name, id, t.line);
+        let name = &t.name;
+        if t.builtin != 0 {
+            if t.width < 1 || t.height < 1 {
+                return Err(err(format!(
+                    "Invalid width or height of builtin texture '{name}' (id {id})"
+                )));
+            }
+            let width = t.width as usize;
+            let height = if t.kind != 0 {
+                6 * width
+            } else {
+                t.height as usize
+            };
+            if width.saturating_mul(height) > (i32::MAX / 3) as usize {
+                return Err(err(format!(
+                    "Could not allocate memory for texture '{name}' (id {id})"
+                )));
+            }
+            let rgb = super::texture::builtin(t, width, height, &mut rng);
+            textures.push((t.kind, width as i32, height as i32, rgb));
+        } else if t.files {
+            return Err(err(
+                "textures from files are not supported by this compiler yet".into(),
+            ));
+        } else if t.kind == 0 {
+            return Err(err(format!(
+                "Cannot load 2D texture from separate files, texture '{name}' (id {id})"
+            )));
+        } else {
+            return Err(err(format!(
+                "No cubefiles defined in cube or skybox texture '{name}' (id {id})"
+            )));
+        }
+    }
+    let materials = spec.materials;
 
     // contact pairs and exclusions, sorted by body signature
     let signature = |b1: usize, b2: usize| (((b1 + 1) << 16) + b2 + 1) as i32;
@@ -445,6 +715,87 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
     }
     pairs.sort_by_key(|p| p.2);
     excludes.sort_by_key(|e| e.1);
+
+    // equality constraints
+    let mut equalities = Vec::new();
+    for (id, mut e) in spec.equalities.into_iter().enumerate() {
+        let name = e.name.clone();
+        let err = |m: String| CError::at(m, &name, id, e.line);
+        let find = |n: &str| -> Option<usize> {
+            match e.kind {
+                0 | 1 => find_body(&bodies, n),
+                2 => joints.iter().position(|j| j.spec.name == n),
+                3 => spec.tendons.iter().position(|t| t.name == n),
+                _ => None,
+            }
+        };
+        if !(0..=3).contains(&e.kind) {
+            return Err(err(format!(
+                "invalid type in equality constraint '{name}' (id = {id})'"
+            )));
+        }
+        let o1 = find(&e.name1).ok_or_else(|| {
+            err(format!(
+                "unknown element '{}' in equality constraint {id}",
+                e.name1
+            ))
+        })?;
+        let mut o2 = -1i32;
+        if !e.name2.is_empty() {
+            o2 = find(&e.name2).ok_or_else(|| {
+                err(format!(
+                    "unknown element '{}' in equality constraint {id}",
+                    e.name2
+                ))
+            })? as i32;
+        }
+        if opts.global && e.kind <= 1 {
+            // anchors are given in world coordinates: connect in body1, weld in body2 (if named)
+            let frame = if e.kind == 0 {
+                Some(o1)
+            } else if o2 >= 0 {
+                Some(o2 as usize)
+            } else {
+                None
+            };
+            if let Some(f) = frame {
+                let (bp, bq) = (bodies[f].gpos, bodies[f].gquat);
+                let a = local_pos(&[e.data[0], e.data[1], e.data[2]], &bp, &bq);
+                e.data[..3].copy_from_slice(&a);
+            }
+        }
+        if e.kind <= 1 && o2 == -1 {
+            o2 = 0;
+        }
+        if o1 as i32 == o2 {
+            return Err(err(format!(
+                "element '{}' is repeated in equality constraint {id}",
+                e.name1
+            )));
+        }
+        if e.kind == 2 {
+            let scalar = |k: JointType| matches!(k, JointType::Hinge | JointType::Slide);
+            let k2 = if o2 >= 0 {
+                joints[o2 as usize].spec.kind
+            } else {
+                JointType::Hinge
+            };
+            if !scalar(joints[o1].spec.kind) || !scalar(k2) {
+                return Err(err(format!(
+                    "only HINGE and SLIDE joint allowed in constraint '{name}' (id = {id})"
+                )));
+            }
+        }
+        let _ = &mut e;
+        equalities.push((e, [o1 as i32, o2]));
+    }
+
+    // tendons
+    let mut tendons = Vec::new();
+    for (id, t) in spec.tendons.into_iter().enumerate() {
+        let wraps = compile_tendon(&t, id, nuser[5], &joints, &geoms, &sites, opts.autolimits)?;
+        tendons.push(wraps);
+    }
 
     // actuators
     let mut trnid = Vec::new();
@@ -564,11 +915,13 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
                 find_body(&bodies, &a.target).ok_or_else(|| missing(&a.target))? as i32,
                 -1,
             ],
-            3 => {
-                return Err(aerr(
-                    "tendon transmissions are not supported by this compiler yet".into(),
-                ))
-            }
+            3 => [
+                tendons
+                    .iter()
+                    .position(|t| t.spec.name == a.target)
+                    .ok_or_else(|| missing(&a.target))? as i32,
+                -1,
+            ],
             _ => {
                 return Err(aerr(format!(
                     "invalid transmission type in actuator '{name}' (id = {id})"
@@ -576,6 +929,186 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
             }
         };
         trnid.push(ids);
+    }
+
+    // sensors
+    let mut csensors = Vec::new();
+    for (id, s) in sensors.into_iter().enumerate() {
+        let find = |objtype: i32, name: &str| -> Option<usize> {
+            match objtype {
+                1 | 2 => find_body(&bodies, name),
+                3 => joints.iter().position(|j| j.spec.name == name),
+                5 => geoms.iter().position(|g| g.spec.name == name),
+                6 => sites.iter().position(|x| x.spec.name == name),
+                7 => cameras.iter().position(|c| c.0.name == name),
+                17 => tendons.iter().position(|t| t.spec.name == name),
+                8 => lights.iter().position(|l| l.0.name == name),
+                18 => actuators.iter().position(|a| a.name == name),
+                _ => None,
+            }
+        };
+        let c = compile_sensor(s, id, nuser[7], &find, &joints, &tendons)?;
+        csensors.push(c);
+    }
+
+    // custom tuples: object ids by type and name
+    let mut tuple_ids = Vec::new();
+    for (id, (name, line, elems)) in custom.tuples.iter().enumerate() {
+        if elems.is_empty() {
+            return Err(CError::at(
+                format!("tuple '{name}' (id = {id}) is empty"),
+                name,
+                id,
+                *line,
+            ));
+        }
+        let mut ids = Vec::new();
+        for (kind, oname, _) in elems {
+            let by_name =
+                |mut names: std::slice::Iter<'_, &str>| names.position(|n| *n == oname.as_str());
+            let found = match kind {
+                1 | 2 => find_body(&bodies, oname),
+                3 => by_name(
+                    joints
+                        .iter()
+                        .map(|j| j.spec.name.as_str())
+                        .collect::<Vec<&str>>()
+                        .iter(),
+                ),
+                5 => by_name(
+                    geoms
+                        .iter()
+                        .map(|g| g.spec.name.as_str())
+                        .collect::<Vec<&str>>()
+                        .iter(),
+                ),
+                6 => by_name(
+                    sites
+                        .iter()
+                        .map(|s| s.spec.name.as_str())
+                        .collect::<Vec<&str>>()
+                        .iter(),
+                ),
+                7 => by_name(
+                    cameras
+                        .iter()
+                        .map(|c| c.0.name.as_str())
+                        .collect::<Vec<&str>>()
+                        .iter(),
+                ),
+                8 => by_name(
+                    lights
+                        .iter()
+                        .map(|l| l.0.name.as_str())
+                        .collect::<Vec<&str>>()
+                        .iter(),
+                ),
+                11 => by_name(
+                    hfields
+                        .iter()
+                        .map(|h| h.name.as_str())
+                        .collect::<Vec<&str>>()
+                        .iter(),
+                ),
+                12 => by_name(
+                    spec.textures
+                        .iter()
+                        .map(|t| t.name.as_str())
+                        .collect::<Vec<&str>>()
+                        .iter(),
+                ),
+                13 => by_name(
+                    materials
+                        .iter()
+                        .map(|m| m.name.as_str())
+                        .collect::<Vec<&str>>()
+                        .iter(),
+                ),
+                14 => by_name(
+                    pairs
+                        .iter()
+                        .map(|p| p.0.name.as_str())
+                        .collect::<Vec<&str>>()
+                        .iter(),
+                ),
+                15 => by_name(
+                    excludes
+                        .iter()
+                        .map(|e| e.0.as_str())
+                        .collect::<Vec<&str>>()
+                        .iter(),
+                ),
+                16 => by_name(
+                    equalities
+                        .iter()
+                        .map(|e| e.0.name.as_str())
+                        .collect::<Vec<&str>>()
+                        .iter(),
+                ),
+                17 => by_name(
+                    tendons
+                        .iter()
+                        .map(|t| t.spec.name.as_str())
+                        .collect::<Vec<&str>>()
+                        .iter(),
+                ),
+                18 => by_name(
+                    actuators
+                        .iter()
+                        .map(|a| a.name.as_str())
+                        .collect::<Vec<&str>>()
+                        .iter(),
+                ),
+                19 => by_name(
+                    csensors
+                        .iter()
+                        .map(|s| s.spec.name.as_str())
+                        .collect::<Vec<&str>>()
+                        .iter(),
+                ),
+                20 => by_name(
+                    custom
+                        .numerics
+                        .iter()
+                        .map(|x| x.0.as_str())
+                        .collect::<Vec<&str>>()
+                        .iter(),
+                ),
+                21 => by_name(
+                    custom
+                        .texts
+                        .iter()
+                        .map(|x| x.0.as_str())
+                        .collect::<Vec<&str>>()
+                        .iter(),
+                ),
+                22 => by_name(
+                    custom
+                        .tuples
+                        .iter()
+                        .map(|x| x.0.as_str())
+                        .collect::<Vec<&str>>()
+                        .iter(),
+                ),
+                23 => by_name(
+                    keys.iter()
+                        .map(|k| k.name.as_str())
+                        .collect::<Vec<&str>>()
+                        .iter(),
+                ),
+                _ => None,
+            };
+            let Some(found) = found else {
+                return Err(CError::at(
+                    format!("unrecognized object '{oname}' in tuple {id}"),
+                    name,
+                    id,
+                    *line,
+                ));
+            };
+            ids.push(found as i32);
+        }
+        tuple_ids.push(ids);
     }
 
     // sizes
@@ -586,6 +1119,8 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
     h.ncam = cameras.len() as i32;
     h.nlight = lights.len() as i32;
     h.nkey = keys.len() as i32;
+    h.nsensor = csensors.len() as i32;
+    h.nsensordata = csensors.iter().map(|s| s.dim).sum();
     h.nq = joints.iter().map(|j| j.spec.kind.nq()).sum::<usize>() as i32;
     h.nv = joints.iter().map(|j| j.spec.kind.nv()).sum::<usize>() as i32;
     for a in &actuators {
@@ -604,11 +1139,45 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
     nnames += sites.iter().map(|s| s.spec.name.len() + 1).sum::<usize>();
     nnames += cameras.iter().map(|c| c.0.name.len() + 1).sum::<usize>();
     nnames += lights.iter().map(|l| l.0.name.len() + 1).sum::<usize>();
+    nnames += hfields.iter().map(|h| h.name.len() + 1).sum::<usize>();
+    h.nhfield = hfields.len() as i32;
+    h.nhfielddata = hfields.iter().map(|h| h.nrow * h.ncol).sum();
+    nnames += spec
+        .textures
+        .iter()
+        .map(|t| t.name.len() + 1)
+        .sum::<usize>();
+    nnames += materials.iter().map(|m| m.name.len() + 1).sum::<usize>();
+    h.ntex = textures.len() as i32;
+    h.ntexdata = textures.iter().map(|t| t.3.len() as i32).sum();
+    h.nmat = materials.len() as i32;
     nnames += pairs.iter().map(|p| p.0.name.len() + 1).sum::<usize>();
     nnames += excludes.iter().map(|e| e.0.len() + 1).sum::<usize>();
     h.npair = pairs.len() as i32;
+    h.neq = equalities.len() as i32;
+    h.ntendon = tendons.len() as i32;
+    h.nwrap = tendons.iter().map(|t| t.wraps.len() as i32).sum();
+    nnames += tendons.iter().map(|t| t.spec.name.len() + 1).sum::<usize>();
+    h.nemax = equalities
+        .iter()
+        .map(|e| [3, 7, 1, 1][e.0.kind as usize])
+        .sum();
+    nnames += equalities.iter().map(|e| e.0.name.len() + 1).sum::<usize>();
     h.nexclude = excludes.len() as i32;
     nnames += actuators.iter().map(|a| a.name.len() + 1).sum::<usize>();
+    nnames += csensors
+        .iter()
+        .map(|s| s.spec.name.len() + 1)
+        .sum::<usize>();
+    nnames += custom.numerics.iter().map(|x| x.0.len() + 1).sum::<usize>();
+    nnames += custom.texts.iter().map(|x| x.0.len() + 1).sum::<usize>();
+    nnames += custom.tuples.iter().map(|x| x.0.len() + 1).sum::<usize>();
+    h.nnumeric = custom.numerics.len() as i32;
+    h.nnumericdata = custom.numerics.iter().map(|x| x.2.len() as i32).sum();
+    h.ntext = custom.texts.len() as i32;
+    h.ntextdata = custom.texts.iter().map(|x| x.2.len() as i32 + 1).sum();
+    h.ntuple = custom.tuples.len() as i32;
+    h.ntupledata = custom.tuples.iter().map(|x| x.2.len() as i32).sum();
     nnames += keys.iter().map(|k| k.name.len() + 1).sum::<usize>();
     h.nnames = nnames as i32;
     h.nconmax = if spec.nconmax < 0 { 100 } else { spec.nconmax };
@@ -748,7 +1317,21 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
         lights,
         pairs,
         excludes,
+        equalities,
+        tendons,
+        textures,
+        texture_names: spec.textures.iter().map(|t| t.name.clone()).collect(),
+        hfields,
+        geom_hfield,
+        materials,
+        mat_texid,
+        geom_matid,
+        site_matid,
+        tendon_matid,
         actuators,
+        sensors: csensors,
+        custom,
+        tuple_ids,
         keys,
         trnid,
         nuser,
@@ -834,6 +1417,373 @@ fn compile_light(l: &mut Light, id: usize, body: usize, bodies: &[FBody]) -> Res
     target_id(&l.target, "light", &l.name, id, l.line, body, bodies).map(|_| ())
 }
 
+/// A compiled tendon: its description (limits resolved) and path as (mjtWrap, object id, prm).
+struct CTendon {
+    spec: Tendon,
+    wraps: Vec<(i32, i32, f64)>,
+}
+
+fn compile_tendon(
+    t: &Tendon,
+    id: usize,
+    nuser: usize,
+    joints: &[FJoint],
+    geoms: &[FGeom],
+    sites: &[FSite],
+    autolimits: bool,
+) -> Result<CTendon, CError> {
+    let name = t.name.as_str();
+    let err = |m: String| CError::at(m, name, id, t.line);
+    if t.user.len() > nuser {
+        return Err(err(format!(
+            "user has more values than nuser_tendon in tendon '{name}' (id = {id})"
+        )));
+    }
+    let sz = t.path.len();
+    if sz == 0 {
+        return Err(err(format!(
+            "tendon '{name}' (id = {id}): path cannot be empty"
+        )));
+    }
+    let spatial = t.path[0].kind != 1;
+    if spatial && sz < 2 {
+        return Err(err(format!(
+            "tendon '{name}' (id = {id}): spatial path must contain at least two objects"
+        )));
+    }
+    if spatial && t.width <= 0.0 {
+        return Err(err(format!(
+            "tendon '{name}' (id = {id}) must have positive width"
+        )));
+    }
+    let mut wraps = Vec::new();
+    for (k, w) in t.path.iter().enumerate() {
+        let werr = |m: String| CError::at(m, &w.name, k, w.line);
+        let find_site = |n: &str| sites.iter().position(|s| s.spec.name == n);
+        let wrap = match w.kind {
+            1 => {
+                let j = joints.iter().position(|j| j.spec.name == w.name);
+                let j = j.ok_or_else(|| {
+                    werr(format!(
+                        "joint '{}' not found in tendon {id}, wrap {k}",
+                        w.name
+                    ))
+                })?;
+                (1, j as i32, w.prm)
+            }
+            4 => {
+                let g = geoms.iter().position(|g| g.spec.name == w.name);
+                let g = g.ok_or_else(|| {
+                    werr(format!(
+                        "geom '{}' not found in tendon {id}, wrap {k}",
+                        w.name
+                    ))
+                })?;
+                let kind = match geoms[g].spec.kind {
+                    CYLINDER => 5,
+                    SPHERE => 4,
+                    _ => {
+                        let m = format!(
+                            "geom '{}' in tendon {id}, wrap {k} is not sphere or cylinder",
+                            w.name
+                        );
+                        return Err(werr(m));
+                    }
+                };
+                let mut side = -1;
+                if !w.sidesite.is_empty() {
+                    let s = find_site(&w.sidesite).ok_or_else(|| {
+                        werr(format!(
+                            "side site '{}' not found in tendon {id}, wrap {k}",
+                            w.sidesite
+                        ))
+                    })?;
+                    side = s as i32;
+                }
+                (kind, g as i32, side as f64)
+            }
+            2 => {
+                if w.prm < 0.0 {
+                    return Err(werr(format!(
+                        "pulley has negative divisor in tendon {id}, wrap {k}"
+                    )));
+                }
+                (2, -1, w.prm)
+            }
+            _ => {
+                let s = find_site(&w.name)
+                    .ok_or_else(|| werr(format!("site '{}' not found in wrap {k}", w.name)))?;
+                (3, s as i32, w.prm)
+            }
+        };
+        wraps.push(wrap);
+    }
+    for i in 0..sz {
+        let kind = wraps[i].0;
+        let prev = if i > 0 { wraps[i - 1].0 } else { -1 };
+        let next = if i + 1 < sz { wraps[i + 1].0 } else { -1 };
+        if !spatial {
+            if kind != 1 {
+                return Err(err(format!(
+                    "tendon '{name}' (id = {id}): spatial object found in fixed path at pos {i}"
+                )));
+            }
+            continue;
+        }
+        match kind {
+            2 => {
+                if prev == 2 {
+                    return Err(err(format!(
+                        "tendon '{name}' (id = {id}): consequtive pulleys (pos {i})"
+                    )));
+                }
+                if i == sz - 1 {
+                    return Err(err(format!(
+                        "tendon '{name}' (id = {id}): path ends with pulley"
+                    )));
+                }
+            }
+            3 => {
+                if (i == 0 || prev == 2) && (i == sz - 1 || next == 2) {
+                    return Err(err(format!(
+                        "tendon '{name}' (id = {id}): site {i} needs a neighbor that is not a pulley"
+                    )));
+                }
+                if next == 3 && wraps[i].1 == wraps[i + 1].1 {
+                    return Err(err(format!(
+                        "tendon '{name}' (id = {id}): site {i} is repeated"
+                    )));
+                }
+            }
+            4 | 5 => {
+                if prev != 3 || next != 3 {
+                    return Err(err(format!(
+                        "tendon '{name}' (id = {id}): geom at pos {i} not bracketed by sites"
+                    )));
+                }
+            }
+            _ => {
+                return Err(err(format!(
+                    "tendon '{name} (id = {id})': joint wrap found in spatial path at pos {i}"
+                )));
+            }
+        }
+    }
+    let mut spec = t.clone();
+    if spec.limited == 2 {
+        let hasrange = !(spec.range[0] == 0.0 && spec.range[1] == 0.0);
+        if !autolimits && hasrange {
+            return Err(err(limited_msg("tendon", "")));
+        }
+        spec.limited = hasrange as i32;
+    }
+    if spec.range[0] >= spec.range[1] && spec.limited != 0 {
+        return Err(err(format!(
+            "invalid limits in tendon '{name} (id = {id})'"
+        )));
+    }
+    spec.user.resize(nuser, 0.0);
+    Ok(CTendon { spec, wraps })
+}
+
+/// A compiled sensor.
+struct CSensor {
+    spec: Sensor,
+    objid: i32,
+    refid: i32,
+    dim: i32,
+    datatype: i32,
+    needstage: i32,
+}
+
+fn compile_sensor(
+    mut s: Sensor,
+    id: usize,
+    nuser: usize,
+    find: &dyn Fn(i32, &str) -> Option<usize>,
+    joints: &[FJoint],
+    tendons: &[CTendon],
+) -> Result<CSensor, CError> {
+    let name = s.name.clone();
+    let err = |m: &str| CError::at(format!("{m} in sensor '{name}' (id = {id})"), &name, id, -1);
+    if s.user.len() > nuser {
+        return Err(err("user has more values than nuser_sensor"));
+    }
+    s.user.resize(nuser, 0.0);
+    if s.noise < 0.0 {
+        return Err(err("negative noise"));
+    }
+    if s.cutoff < 0.0 {
+        return Err(err("negative cutoff"));
+    }
+    let (mut objid, mut refid) = (-1, -1);
+    if s.objtype != 0 {
+        if s.objname.is_empty() {
+            return Err(err("missing name of sensorized object"));
+        }
+        objid = find(s.objtype, &s.objname)
+            .ok_or_else(|| err("unrecognized name of sensorized object"))? as i32;
+    } else if s.kind != 35 {
+        return Err(err("invalid type"));
+    }
+    let frame_obj = |t: i32| matches!(t, 1 | 2 | 5 | 6 | 7);
+    if s.reftype != 0 {
+        if s.refname.is_empty() {
+            return Err(err("missing name of reference frame object"));
+        }
+        refid = find(s.reftype, &s.refname)
+            .ok_or_else(|| err("unrecognized name of reference frame object"))?
+            as i32;
+        if !frame_obj(s.reftype) {
+            return Err(CError::at(
+                format!("reference frame object must be (x)body, geom, site or camera: sensor '{name}' (id = {id})"),
+                &name,
+                id,
+                -1,
+            ));
+        }
+    }
+    let attached = |what: &str| {
+        CError::at(
+            format!("sensor must be attached to {what}: sensor '{name}' (id = {id})"),
+            &name,
+            id,
+            -1,
+        )
+    };
+    let joint = |k: i32| {
+        joints
+            .get(objid.max(0) as usize)
+            .map(|j| (j.spec.kind, j.spec.limited))
+            .filter(|_| k == 3)
+    };
+    // (dim, datatype, needstage); stages: 1 pos, 2 vel, 3 acc; datatypes: 0 real, 1 positive, 2 axis, 3 quat
+    let stage3 = |k: i32, base: i32| [1, 2, 3][(k - base) as usize];
+    let (dim, datatype, needstage) = match s.kind {
+        0..=7 => {
+            if s.objtype != 6 {
+                return Err(attached("site"));
+            }
+            let (dim, dt) = if s.kind == 0 || s.kind == 7 {
+                (1, 1)
+            } else {
+                (3, 0)
+            };
+            let stage = match s.kind {
+                6 | 7 => 1,
+                2 | 3 => 2,
+                _ => 3,
+            };
+            (dim, dt, stage)
+        }
+        8 | 9 => {
+            let Some((kind, _)) = joint(s.objtype) else {
+                return Err(attached("joint"));
+            };
+            if !matches!(kind, JointType::Slide | JointType::Hinge) {
+                return Err(err("joint must be slide or hinge"));
+            }
+            (1, 0, s.kind - 7)
+        }
+        10 | 11 => {
+            if s.objtype != 17 {
+                return Err(attached("tendon"));
+            }
+            (1, 0, s.kind - 9)
+        }
+        12..=14 => {
+            if s.objtype != 18 {
+                return Err(attached("actuator"));
+            }
+            (1, 0, stage3(s.kind, 12))
+        }
+        15 | 16 => {
+            let Some((kind, _)) = joint(s.objtype) else {
+                return Err(attached("joint"));
+            };
+            if kind != JointType::Ball {
+                return Err(err("joint must be ball"));
+            }
+            if s.kind == 15 {
+                (4, 3, 1)
+            } else {
+                (3, 0, 2)
+            }
+        }
+        17..=19 => {
+            let Some((_, limited)) = joint(s.objtype) else {
+                return Err(attached("joint"));
+            };
+            if limited == 0 {
+                return Err(err("joint must be limited"));
+            }
+            (1, 0, stage3(s.kind, 17))
+        }
+        20..=22 => {
+            if s.objtype != 17 {
+                return Err(attached("tendon"));
+            }
+            if tendons[objid as usize].spec.limited == 0 {
+                return Err(err("tendon must be limited"));
+            }
+            (1, 0, stage3(s.kind, 20))
+        }
+        23..=31 => {
+            if !frame_obj(s.objtype) {
+                return Err(attached("(x)body, geom, site or camera"));
+            }
+            let dim = if s.kind == 24 { 4 } else { 3 };
+            let dt = match s.kind {
+                24 => 3,
+                25..=27 => 2,
+                _ => 0,
+            };
+            let stage = match s.kind {
+                30 | 31 => 3,
+                28 | 29 => 2,
+                _ => 1,
+            };
+            (dim, dt, stage)
+        }
+        32..=34 => {
+            if s.objtype != 1 {
+                return Err(attached("body"));
+            }
+            (3, 0, if s.kind == 32 { 1 } else { 2 })
+        }
+        35 => (1, 0, 1),
+        36 => {
+            if s.dim < 0 {
+                return Err(CError::at(
+                    format!("sensor dim must be positive: sensor '{name}' (id = {id})"),
+                    &name,
+                    id,
+                    -1,
+                ));
+            }
+            if s.datatype == 2 && s.dim != 3 {
+                return Err(err("datatype AXIS requires dim=3"));
+            }
+            if s.datatype == 3 && s.dim != 4 {
+                return Err(err("datatype QUATERNION requires dim=4"));
+            }
+            (s.dim, s.datatype, s.needstage)
+        }
+        _ => return Err(err("invalid type")),
+    };
+    if s.cutoff > 0.0 && (datatype == 2 || datatype == 3) {
+        return Err(err("cutoff applied to axis or quaternion datatype"));
+    }
+    Ok(CSensor {
+        spec: s,
+        objid,
+        refid,
+        dim,
+        datatype,
+        needstage,
+    })
+}
+
 fn put<T: Copy>(dst: &mut [T], i: usize, src: &[T]) {
     let n = src.len();
     dst[i * n..(i + 1) * n].copy_from_slice(src);
@@ -841,9 +1791,7 @@ fn put<T: Copy>(dst: &mut [T], i: usize, src: &[T]) {
 
 fn null_pose(pos: &[f64; 3], quat: Option<&[f64; 4]>) -> bool {
     pos.iter().all(|&p| p == 0.0)
-        && quat.map_or(true, |q| {
-            q[0] == 1.0 && q[1] == 0.0 && q[2] == 0.0 && q[3] == 0.0
-        })
+        && quat.is_none_or(|q| q[0] == 1.0 && q[1] == 0.0 && q[2] == 0.0 && q[3] == 0.0)
 }
 
 fn normalize4_engine(q: &mut [f64]) {
@@ -892,14 +1840,41 @@ impl Compiled {
         for (i, l) in self.lights.iter().enumerate() {
             name(&mut m.name_lightadr[i], &l.0.name, m.names);
         }
+        for (i, hf) in self.hfields.iter().enumerate() {
+            name(&mut m.name_hfieldadr[i], &hf.name, m.names);
+        }
+        for (i, t) in self.texture_names.iter().enumerate() {
+            name(&mut m.name_texadr[i], t, m.names);
+        }
+        for (i, mat) in self.materials.iter().enumerate() {
+            name(&mut m.name_matadr[i], &mat.name, m.names);
+        }
         for (i, p) in self.pairs.iter().enumerate() {
             name(&mut m.name_pairadr[i], &p.0.name, m.names);
         }
         for (i, e) in self.excludes.iter().enumerate() {
             name(&mut m.name_excludeadr[i], &e.0, m.names);
         }
+        for (i, e) in self.equalities.iter().enumerate() {
+            name(&mut m.name_eqadr[i], &e.0.name, m.names);
+        }
+        for (i, t) in self.tendons.iter().enumerate() {
+            name(&mut m.name_tendonadr[i], &t.spec.name, m.names);
+        }
         for (i, a) in self.actuators.iter().enumerate() {
             name(&mut m.name_actuatoradr[i], &a.name, m.names);
+        }
+        for (i, s) in self.sensors.iter().enumerate() {
+            name(&mut m.name_sensoradr[i], &s.spec.name, m.names);
+        }
+        for (i, x) in self.custom.numerics.iter().enumerate() {
+            name(&mut m.name_numericadr[i], &x.0, m.names);
+        }
+        for (i, x) in self.custom.texts.iter().enumerate() {
+            name(&mut m.name_textadr[i], &x.0, m.names);
+        }
+        for (i, x) in self.custom.tuples.iter().enumerate() {
+            name(&mut m.name_tupleadr[i], &x.0, m.names);
         }
         for (i, k) in self.keys.iter().enumerate() {
             name(&mut m.name_keyadr[i], &k.name, m.names);
@@ -987,8 +1962,8 @@ impl Compiled {
                 let q = qposadr;
                 match j.kind {
                     JointType::Free => {
-                        m.qpos0[q..q + 3].copy_from_slice(&b.pos);
-                        m.qpos0[q + 3..q + 7].copy_from_slice(&b.quat);
+                        m.qpos0[q..q + 3].copy_from_slice(&b.gpos);
+                        m.qpos0[q + 3..q + 7].copy_from_slice(&b.gquat);
                         let v: Vec<f64> = m.qpos0[q..q + 7].to_vec();
                         m.qpos_spring[q..q + 7].copy_from_slice(&v);
                     }
@@ -1025,6 +2000,7 @@ impl Compiled {
                 m.geom_condim[gid] = s.condim;
                 m.geom_bodyid[gid] = g.body as i32;
                 m.geom_dataid[gid] = -1;
+                put(m.geom_fluid, gid, &g.out.fluid);
                 m.geom_matid[gid] = -1;
                 m.geom_group[gid] = s.group;
                 m.geom_priority[gid] = s.priority;
@@ -1127,6 +2103,49 @@ impl Compiled {
             }
         }
 
+        // assets
+        let mut adr = 0;
+        for (i, hf) in self.hfields.iter().enumerate() {
+            put(m.hfield_size, i, &hf.size);
+            m.hfield_nrow[i] = hf.nrow;
+            m.hfield_ncol[i] = hf.ncol;
+            m.hfield_adr[i] = adr;
+            adr += hf.nrow * hf.ncol;
+        }
+        for (g, hf) in self.geom_hfield.iter().enumerate() {
+            if let Some(h) = hf {
+                m.geom_dataid[g] = *h as i32;
+            }
+        }
+        let mut adr = 0;
+        for (i, (kind, width, height, rgb)) in self.textures.iter().enumerate() {
+            m.tex_type[i] = *kind;
+            m.tex_height[i] = *height;
+            m.tex_width[i] = *width;
+            m.tex_adr[i] = adr as i32;
+            m.tex_rgb[adr..adr + rgb.len()].copy_from_slice(rgb);
+            adr += rgb.len();
+        }
+        for (i, mat) in self.materials.iter().enumerate() {
+            m.mat_texid[i] = self.mat_texid[i];
+            m.mat_texuniform[i] = mat.texuniform as u8;
+            put(m.mat_texrepeat, i, &mat.texrepeat);
+            m.mat_emission[i] = mat.emission;
+            m.mat_specular[i] = mat.specular;
+            m.mat_shininess[i] = mat.shininess;
+            m.mat_reflectance[i] = mat.reflectance;
+            put(m.mat_rgba, i, &mat.rgba);
+        }
+        for (g, &id) in self.geom_matid.iter().enumerate() {
+            m.geom_matid[g] = id;
+        }
+        for (s, &id) in self.site_matid.iter().enumerate() {
+            m.site_matid[s] = id;
+        }
+        for (t, &id) in self.tendon_matid.iter().enumerate() {
+            m.tendon_matid[t] = id;
+        }
+
         // contact pairs, exclusions
         for (i, (p, g, sig)) in self.pairs.iter().enumerate() {
             m.pair_dim[i] = p.condim;
@@ -1141,6 +2160,42 @@ impl Compiled {
         }
         for (i, e) in self.excludes.iter().enumerate() {
             m.exclude_signature[i] = e.1;
+        }
+        for (i, (e, ids)) in self.equalities.iter().enumerate() {
+            m.eq_type[i] = e.kind;
+            m.eq_obj1id[i] = ids[0];
+            m.eq_obj2id[i] = ids[1];
+            m.eq_active[i] = e.active as u8;
+            put(m.eq_solref, i, &e.solref);
+            put(m.eq_solimp, i, &e.solimp);
+            put(m.eq_data, i, &e.data);
+        }
+        let mut adr = 0;
+        for (i, t) in self.tendons.iter().enumerate() {
+            let s = &t.spec;
+            m.tendon_adr[i] = adr as i32;
+            m.tendon_num[i] = t.wraps.len() as i32;
+            m.tendon_group[i] = s.group;
+            m.tendon_limited[i] = s.limited as u8;
+            m.tendon_width[i] = s.width;
+            put(m.tendon_solref_lim, i, &s.solref_limit);
+            put(m.tendon_solimp_lim, i, &s.solimp_limit);
+            put(m.tendon_solref_fri, i, &s.solref_friction);
+            put(m.tendon_solimp_fri, i, &s.solimp_friction);
+            put(m.tendon_range, i, &s.range);
+            m.tendon_margin[i] = s.margin;
+            m.tendon_stiffness[i] = s.stiffness;
+            m.tendon_damping[i] = s.damping;
+            m.tendon_frictionloss[i] = s.frictionloss;
+            m.tendon_lengthspring[i] = s.springlength;
+            put(m.tendon_user, i, &s.user);
+            put(m.tendon_rgba, i, &s.rgba);
+            for (k, w) in t.wraps.iter().enumerate() {
+                m.wrap_type[adr + k] = w.0;
+                m.wrap_objid[adr + k] = w.1;
+                m.wrap_prm[adr + k] = w.2;
+            }
+            adr += t.wraps.len();
         }
 
         // actuators
@@ -1166,6 +2221,53 @@ impl Compiled {
             let mut user = a.user.clone();
             user.resize(nua, 0.0);
             put(m.actuator_user, i, &user);
+        }
+
+        // custom data
+        let mut adr = 0;
+        for (i, x) in self.custom.numerics.iter().enumerate() {
+            m.numeric_adr[i] = adr as i32;
+            m.numeric_size[i] = x.2.len() as i32;
+            m.numeric_data[adr..adr + x.2.len()].copy_from_slice(&x.2);
+            adr += x.2.len();
+        }
+        let mut adr = 0;
+        for (i, x) in self.custom.texts.iter().enumerate() {
+            m.text_adr[i] = adr as i32;
+            m.text_size[i] = x.2.len() as i32 + 1;
+            for (k, b) in x.2.bytes().enumerate() {
+                m.text_data[adr + k] = b as std::os::raw::c_char;
+            }
+            adr += x.2.len() + 1;
+        }
+        let mut adr = 0;
+        for (i, x) in self.custom.tuples.iter().enumerate() {
+            m.tuple_adr[i] = adr as i32;
+            m.tuple_size[i] = x.2.len() as i32;
+            for (k, (kind, _, prm)) in x.2.iter().enumerate() {
+                m.tuple_objtype[adr + k] = *kind;
+                m.tuple_objid[adr + k] = self.tuple_ids[i][k];
+                m.tuple_objprm[adr + k] = *prm;
+            }
+            adr += x.2.len();
+        }
+
+        // sensors
+        let mut adr = 0;
+        for (i, s) in self.sensors.iter().enumerate() {
+            m.sensor_type[i] = s.spec.kind;
+            m.sensor_datatype[i] = s.datatype;
+            m.sensor_needstage[i] = s.needstage;
+            m.sensor_objtype[i] = s.spec.objtype;
+            m.sensor_objid[i] = s.objid;
+            m.sensor_reftype[i] = s.spec.reftype;
+            m.sensor_refid[i] = s.refid;
+            m.sensor_dim[i] = s.dim;
+            m.sensor_cutoff[i] = s.spec.cutoff;
+            m.sensor_noise[i] = s.spec.noise;
+            put(m.sensor_user, i, &s.spec.user);
+            m.sensor_adr[i] = adr;
+            adr += s.dim;
         }
 
         // keyframes: missing entries default to qpos0, zeros, mocap body poses

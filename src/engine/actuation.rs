@@ -1,80 +1,137 @@
-//! Actuation: clamped controls, gains and biases, actuator forces mapped to joint space.
+//! Actuation: clamped controls, gains and biases (fixed, affine, muscle), actuator forces mapped
+//! to joint space, and activation rates of stateful actuators.
 
-use super::linalg::{clip, is_bad, mul_mat_t_vec};
+use super::linalg::{clip, is_bad, max, mul_mat_t_vec};
 use super::support::warning;
-use super::{disabled, not_implemented, tick, Data, EngineError, Model};
+use super::{disabled, not_implemented, tick, Data, EngineError, Model, MINVAL};
 use crate::abi::*;
+use crate::math::misc::{muscle_bias, muscle_dynamics, muscle_gain};
 
-/// actuator_force, qfrc_actuator, act_dot (mj_fwdActuation; stateless, fixed/affine only).
+const GAIN_FIXED: i32 = mjtGain_::mjGAIN_FIXED as i32;
+const GAIN_AFFINE: i32 = mjtGain_::mjGAIN_AFFINE as i32;
+const GAIN_MUSCLE: i32 = mjtGain_::mjGAIN_MUSCLE as i32;
+const BIAS_NONE: i32 = mjtBias_::mjBIAS_NONE as i32;
+const BIAS_AFFINE: i32 = mjtBias_::mjBIAS_AFFINE as i32;
+const BIAS_MUSCLE: i32 = mjtBias_::mjBIAS_MUSCLE as i32;
+const DYN_NONE: i32 = mjtDyn_::mjDYN_NONE as i32;
+const DYN_INTEGRATOR: i32 = mjtDyn_::mjDYN_INTEGRATOR as i32;
+const DYN_FILTER: i32 = mjtDyn_::mjDYN_FILTER as i32;
+const DYN_MUSCLE: i32 = mjtDyn_::mjDYN_MUSCLE as i32;
+
+/// Gain of actuator `i` at its current length and velocity.
+fn gain(m: &Model, d: &Data, i: usize) -> Result<f64, EngineError> {
+    let prm = &m.actuator_gainprm()[mjNGAIN * i..mjNGAIN * (i + 1)];
+    let (len, vel) = (d.actuator_length[i], d.actuator_velocity[i]);
+    Ok(match m.actuator_gaintype()[i] {
+        GAIN_FIXED => prm[0],
+        GAIN_AFFINE => prm[0] + prm[1] * len + prm[2] * vel,
+        GAIN_MUSCLE => muscle_gain(
+            len,
+            vel,
+            &m.actuator_lengthrange()[2 * i..2 * i + 2],
+            m.actuator_acc0()[i],
+            prm,
+        ),
+        _ => return Err(not_implemented("user actuator gain (mjcb_act_gain) is")),
+    })
+}
+
+/// Bias of actuator `i` at its current length and velocity.
+fn bias(m: &Model, d: &Data, i: usize) -> Result<f64, EngineError> {
+    let prm = &m.actuator_biasprm()[mjNBIAS * i..mjNBIAS * (i + 1)];
+    let (len, vel) = (d.actuator_length[i], d.actuator_velocity[i]);
+    Ok(match m.actuator_biastype()[i] {
+        BIAS_NONE => 0.0,
+        BIAS_AFFINE => prm[0] + prm[1] * len + prm[2] * vel,
+        BIAS_MUSCLE => muscle_bias(
+            len,
+            &m.actuator_lengthrange()[2 * i..2 * i + 2],
+            m.actuator_acc0()[i],
+            prm,
+        ),
+        _ => return Err(not_implemented("user actuator bias (mjcb_act_bias) is")),
+    })
+}
+
+/// Activation rate of stateful actuator `i` with activation `act` and clamped control `ctrl`.
+fn act_rate(m: &Model, i: usize, ctrl: f64, act: f64) -> Result<f64, EngineError> {
+    let prm = &m.actuator_dynprm()[mjNDYN * i..mjNDYN * (i + 1)];
+    Ok(match m.actuator_dyntype()[i] {
+        DYN_INTEGRATOR => ctrl,
+        DYN_FILTER => (ctrl - act) / max(MINVAL, prm[0]),
+        DYN_MUSCLE => muscle_dynamics(ctrl, act, prm),
+        _ => return Err(not_implemented("user actuator dynamics (mjcb_act_dyn) are")),
+    })
+}
+
+/// actuator_force, qfrc_actuator, act_dot (mj_fwdActuation).
 pub fn fwd_actuation(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     let nv = m.raw.nv as usize;
     let nu = m.raw.nu as usize;
     let na = m.raw.na as usize;
     d.qfrc_actuator.fill(0.0);
     d.actuator_force.fill(0.0);
+    // act_dot is left as it was here, as in the reference
     if nu == 0 || disabled(m, mjtDisableBit_::mjDSBL_ACTUATION) {
         return Ok(());
     }
-    if na > 0 {
-        return Err(not_implemented(
-            "actuator dynamics (stateful actuators) are",
-        ));
-    }
-    d.arena.scope(|a| -> Result<(), EngineError> {
-        let ctrl = a.alloc(nu)?;
-        let noclamp = disabled(m, mjtDisableBit_::mjDSBL_CLAMPCTRL);
-        for i in 0..nu {
-            ctrl[i] = if !noclamp && m.actuator_ctrllimited()[i] != 0 {
-                clip(
-                    d.ctrl[i],
-                    m.actuator_ctrlrange()[2 * i],
-                    m.actuator_ctrlrange()[2 * i + 1],
-                )
-            } else {
-                d.ctrl[i]
-            };
-        }
-        for i in 0..nu {
-            if is_bad(ctrl[i]) {
-                warning(d.raw, mjtWarning_::mjWARN_BADCTRL as i32, i as i32)?;
-                ctrl.fill(0.0);
-                break;
-            }
-        }
-        let force = &mut *d.actuator_force;
-        for i in 0..nu {
-            let prm = &m.actuator_gainprm()[mjNGAIN * i..mjNGAIN * (i + 1)];
-            let len = d.actuator_length[i];
-            let vel = d.actuator_velocity[i];
-            let gain = match m.actuator_gaintype()[i] {
-                x if x == mjtGain_::mjGAIN_FIXED as i32 => prm[0],
-                x if x == mjtGain_::mjGAIN_AFFINE as i32 => prm[0] + prm[1] * len + prm[2] * vel,
-                x => return Err(not_implemented(&format!("actuator gain type {x} is"))),
-            };
-            if m.actuator_dyntype()[i] != mjtDyn_::mjDYN_NONE as i32 {
-                return Err(not_implemented("actuator dynamics are"));
-            }
-            force[i] = gain * ctrl[i];
-            let prm = &m.actuator_biasprm()[mjNBIAS * i..mjNBIAS * (i + 1)];
-            let bias = match m.actuator_biastype()[i] {
-                x if x == mjtBias_::mjBIAS_NONE as i32 => 0.0,
-                x if x == mjtBias_::mjBIAS_AFFINE as i32 => prm[0] + prm[1] * len + prm[2] * vel,
-                x => return Err(not_implemented(&format!("actuator bias type {x} is"))),
-            };
-            force[i] += bias;
-        }
-        for i in 0..nu {
-            if m.actuator_forcelimited()[i] != 0 {
-                force[i] = clip(
-                    force[i],
-                    m.actuator_forcerange()[2 * i],
-                    m.actuator_forcerange()[2 * i + 1],
-                );
-            }
-        }
-        mul_mat_t_vec(d.qfrc_actuator, d.actuator_moment, force, nu, nv);
-        Ok(())
-    })?;
+    let ctrl = d.arena.alloc(nu)?;
+    actuate(m, d, ctrl, nu, nv, na)?;
     tick(d, mjtTimer_::mjTIMER_ACTUATION);
+    Ok(())
+}
+
+fn actuate(
+    m: &Model,
+    d: &mut Data,
+    ctrl: &mut [f64],
+    nu: usize,
+    nv: usize,
+    na: usize,
+) -> Result<(), EngineError> {
+    let noclamp = disabled(m, mjtDisableBit_::mjDSBL_CLAMPCTRL);
+    for i in 0..nu {
+        ctrl[i] = if !noclamp && m.actuator_ctrllimited()[i] != 0 {
+            clip(
+                d.ctrl[i],
+                m.actuator_ctrlrange()[2 * i],
+                m.actuator_ctrlrange()[2 * i + 1],
+            )
+        } else {
+            d.ctrl[i]
+        };
+    }
+    for i in 0..nu {
+        if is_bad(ctrl[i]) {
+            warning(d.raw, mjtWarning_::mjWARN_BADCTRL as i32, i as i32)?;
+            ctrl.fill(0.0);
+            break;
+        }
+    }
+    for i in 0..nu {
+        let g = gain(m, d, i)?;
+        let input = if m.actuator_dyntype()[i] == DYN_NONE {
+            ctrl[i]
+        } else {
+            d.act[i + na - nu]
+        };
+        let mut f = g * input;
+        f += bias(m, d, i)?;
+        d.actuator_force[i] = f;
+    }
+    for i in 0..nu {
+        if m.actuator_forcelimited()[i] != 0 {
+            d.actuator_force[i] = clip(
+                d.actuator_force[i],
+                m.actuator_forcerange()[2 * i],
+                m.actuator_forcerange()[2 * i + 1],
+            );
+        }
+    }
+    mul_mat_t_vec(d.qfrc_actuator, d.actuator_moment, d.actuator_force, nu, nv);
+    for i in nu - na..nu {
+        let j = i + na - nu;
+        d.act_dot[j] = act_rate(m, i, ctrl[i], d.act[j])?;
+    }
     Ok(())
 }

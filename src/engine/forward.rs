@@ -2,7 +2,7 @@
 
 use super::actuation::fwd_actuation;
 use super::collision::collision;
-use super::constraint::make_constraint;
+use super::constraint::{make_constraint, project_constraint, reference_constraint};
 use super::inertia::{crb, factor_m, solve_ld};
 use super::integrate::{euler, runge_kutta};
 use super::jacobian::jac;
@@ -18,20 +18,14 @@ use super::{enabled, not_implemented, tick, Data, EngineError, Model};
 use crate::abi::*;
 use mjtTimer_::*;
 
-/// Tendon lengths and moments: only the tendon-free case exists so far.
-pub fn tendon(m: &Model) -> Result<(), EngineError> {
-    if m.raw.ntendon > 0 {
-        return Err(not_implemented("tendons are"));
-    }
-    Ok(())
-}
+pub use super::tendon::tendon;
 
 /// Position-dependent stage (mj_fwdPosition).
 pub fn fwd_position(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     kinematics(m, d)?;
     com_pos(m, d)?;
     camlight(m, d, false);
-    tendon(m)?;
+    tendon(m, d)?;
     tick(d, mjTIMER_POS_KINEMATICS);
     crb(m, d, true);
     factor_m(m, d)?;
@@ -41,6 +35,7 @@ pub fn fwd_position(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     make_constraint(m, d)?;
     transmission(m, d)?;
     tick(d, mjTIMER_POS_MAKE);
+    project_constraint(m, d)?;
     tick(d, mjTIMER_POS_PROJECT);
     tick(d, mjTIMER_POSITION);
     Ok(())
@@ -49,9 +44,24 @@ pub fn fwd_position(m: &Model, d: &mut Data) -> Result<(), EngineError> {
 /// Velocity-dependent stage (mj_fwdVelocity).
 pub fn fwd_velocity(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     let (nu, nv) = (m.raw.nu as usize, m.raw.nv as usize);
+    let nten = m.raw.ntendon as usize;
+    if super::jacdif::is_sparse(m) {
+        crate::math::sparse::mul_mat_vec_sparse(
+            d.ten_velocity,
+            d.ten_J,
+            d.qvel,
+            nten,
+            d.ten_J_rownnz,
+            d.ten_J_rowadr,
+            d.ten_J_colind,
+        );
+    } else {
+        mul_mat_vec(d.ten_velocity, d.ten_J, d.qvel, nten, nv);
+    }
     mul_mat_vec(d.actuator_velocity, d.actuator_moment, d.qvel, nu, nv);
     com_vel(m, d);
     passive(m, d)?;
+    reference_constraint(m, d);
     rne_bias(m, d)?;
     tick(d, mjTIMER_VELOCITY);
     Ok(())
@@ -133,17 +143,9 @@ pub fn fwd_acceleration(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     Ok(())
 }
 
-/// mj_fwdConstraint without constraints: qacc = qacc_smooth.
+/// mj_fwdConstraint: the constraint solver.
 pub fn fwd_constraint(m: &Model, d: &mut Data) -> Result<(), EngineError> {
-    if d.raw.nefc != 0 {
-        return Err(not_implemented("the constraint solver is"));
-    }
-    let _ = m;
-    d.qacc.copy_from_slice(d.qacc_smooth);
-    d.qacc_warmstart.copy_from_slice(d.qacc_smooth);
-    d.qfrc_constraint.fill(0.0);
-    d.raw.solver_iter = 0;
-    Ok(())
+    super::solver::fwd_constraint(m, d)
 }
 
 /// Resets and warns when qpos has a bad value (mj_checkPos).

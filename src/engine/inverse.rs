@@ -21,7 +21,7 @@ pub fn inv_position(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     kinematics(m, d)?;
     com_pos(m, d)?;
     camlight(m, d, false);
-    tendon(m)?;
+    tendon(m, d)?;
     transmission(m, d)?;
     tick(d, mjTIMER_POS_KINEMATICS);
     crb(m, d, true);

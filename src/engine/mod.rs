@@ -5,9 +5,11 @@
 pub mod actuation;
 pub mod collision;
 pub mod constraint;
+pub mod fluid;
 pub mod forward;
 pub mod inertia;
 pub mod integrate;
+pub mod jacdif;
 pub mod inverse;
 pub mod jacobian;
 pub mod kinematics;
@@ -17,7 +19,9 @@ pub mod print;
 pub mod rne;
 pub mod sensor;
 pub mod setconst;
+pub mod solver;
 pub mod support;
+pub mod tendon;
 pub mod transmission;
 pub mod velocity;
 

@@ -1,12 +1,13 @@
 //! Passive forces: joint springs (quaternion springs for ball and free joints), dof dampers.
 
 use super::{
-    disabled, not_implemented, Data, EngineError, Model, JNT_BALL, JNT_FREE, JNT_HINGE, JNT_SLIDE,
+    disabled, Data, EngineError, Model, JNT_BALL, JNT_FREE, JNT_HINGE, JNT_SLIDE,
 };
 use crate::abi::mjtDisableBit_;
+use crate::math::blas::add_to_scl;
 use crate::math::*;
 
-/// qfrc_passive (mj_passive, without tendons and fluid forces).
+/// qfrc_passive (mj_passive): joint and tendon springs and dampers, fluid forces.
 pub fn passive(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     d.qfrc_passive.fill(0.0);
     if disabled(m, mjtDisableBit_::mjDSBL_PASSIVE) {
@@ -40,11 +41,19 @@ pub fn passive(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     for i in 0..m.raw.nv as usize {
         f[i] -= m.dof_damping()[i] * d.qvel[i];
     }
-    if m.raw.ntendon > 0 {
-        return Err(not_implemented("tendon spring-dampers are"));
+    let sparse = super::jacdif::is_sparse(m);
+    let nv = m.raw.nv as usize;
+    for i in 0..m.raw.ntendon as usize {
+        let frc = -m.tendon_stiffness()[i] * (d.ten_length[i] - m.tendon_lengthspring()[i])
+            - m.tendon_damping()[i] * d.ten_velocity[i];
+        if sparse {
+            let adr = d.ten_J_rowadr[i] as usize;
+            for j in adr..adr + d.ten_J_rownnz[i] as usize {
+                f[d.ten_J_colind[j] as usize] += d.ten_J[j] * frc;
+            }
+        } else {
+            add_to_scl(f, &d.ten_J[i * nv..(i + 1) * nv], frc);
+        }
     }
-    if m.raw.opt.viscosity > 0.0 || m.raw.opt.density > 0.0 {
-        return Err(not_implemented("fluid forces (density, viscosity) are"));
-    }
-    Ok(())
+    super::fluid::fluid(m, d)
 }

@@ -3,7 +3,6 @@
 
 use crate::abi::view::{self, Model};
 use crate::abi::*;
-use std::ffi::CString;
 use std::fmt::Write as _;
 
 /// Default number format of the dumps.
@@ -57,80 +56,9 @@ macro_rules! model_columns {
 }
 crate::mjmodel_pointers!(model_columns);
 
-/// printf-style formatting of one number with a validated single-conversion format.
-pub struct NumberFormat(CString);
-
-impl NumberFormat {
-    /// The format if it is a valid single float conversion (2.2.2's rules), else the default.
-    pub fn new(format: &str) -> Result<Self, String> {
-        validate_float_format(format)?;
-        Ok(NumberFormat(
-            CString::new(format).map_err(|_| "bad format")?,
-        ))
-    }
-
-    pub fn default_format() -> Self {
-        NumberFormat(CString::new(FLOAT_FORMAT).unwrap())
-    }
-
-    pub fn real(&self, out: &mut String, v: f64) {
-        let mut buf = [0u8; 512];
-        // SAFETY: the format was validated to take exactly one double.
-        let n = unsafe {
-            libc::snprintf(
-                buf.as_mut_ptr() as *mut libc::c_char,
-                buf.len(),
-                self.0.as_ptr(),
-                v,
-            )
-        };
-        let n = (n.max(0) as usize).min(buf.len() - 1);
-        out.push_str(&String::from_utf8_lossy(&buf[..n]));
-    }
-}
-
-/// 2.2.2's check of a user float format: `%`, flags, width, precision, optional `L`, one of fgGeE.
-pub fn validate_float_format(f: &str) -> Result<(), String> {
-    if f.len() > 20 {
-        return Err("Format string longer than limit of 20.".into());
-    }
-    let b = f.as_bytes();
-    let mut i = 0;
-    if b.first() != Some(&b'%') {
-        return Err("Format string must start with '%'.".into());
-    }
-    i += 1;
-    let mut seen = [0; 5];
-    while let Some(k) = b.get(i).and_then(|c| b"-+ #0".iter().position(|x| x == c)) {
-        seen[k] += 1;
-        if seen[k] > 1 {
-            return Err("Format string contains repeated flag.".into());
-        }
-        i += 1;
-    }
-    while b.get(i).is_some_and(|c| c.is_ascii_digit()) {
-        i += 1;
-    }
-    if b.get(i) == Some(&b'.') {
-        i += 1;
-        while b.get(i).is_some_and(|c| c.is_ascii_digit()) {
-            i += 1;
-        }
-    }
-    if b.get(i) == Some(&b'L') {
-        i += 1;
-    }
-    if !b.get(i).is_some_and(|c| b"fgGeE".contains(c)) {
-        return Err("Format string specifier must be one of \"fgGeE\".".into());
-    }
-    i += 1;
-    if i == b.len() {
-        Ok(())
-    } else {
-        Err(format!(
-            "Unable to match format string {f} with expected pattern for a single float."
-        ))
-    }
+/// How the dumps write one real number (the C API formats with the caller's printf format).
+pub trait NumberWriter {
+    fn real(&self, out: &mut String, v: f64);
 }
 
 fn name(out: &mut String, s: &str) {
@@ -171,7 +99,7 @@ const CLASSES: &[(&str, &str, Option<&str>)] = &[
 ];
 
 /// The whole dump as text.
-pub fn model_text(mv: Model, fmt: &NumberFormat, version: &str) -> String {
+pub fn model_text(mv: Model, fmt: &dyn NumberWriter, version: &str) -> String {
     let m = mv.raw;
     let mut o = String::new();
     let real = |o: &mut String, v: f64| fmt.real(o, v);
@@ -347,7 +275,7 @@ pub fn model_text(mv: Model, fmt: &NumberFormat, version: &str) -> String {
     o
 }
 
-fn custom_text(o: &mut String, mv: Model, fmt: &NumberFormat) {
+fn custom_text(o: &mut String, mv: Model, fmt: &dyn NumberWriter) {
     let m = mv.raw;
     for i in 0..m.nnumeric.max(0) as usize {
         let _ = writeln!(o, "\nNUMERIC {i}:");
@@ -424,7 +352,7 @@ pub fn object_type_name(t: i32) -> &'static str {
 
 /// Keyframes, each field printed only where it differs from the defaults (2.2.2's rules,
 /// including how its running flag decides what is printed).
-fn keyframes_text(o: &mut String, mv: Model, fmt: &NumberFormat) {
+fn keyframes_text(o: &mut String, mv: Model, fmt: &dyn NumberWriter) {
     let m = mv.raw;
     let (nq, nv, na, nu, nmocap) = (
         m.nq as usize,
@@ -538,7 +466,7 @@ fn rows_to_dense(
 
 struct DataPrinter<'f> {
     o: String,
-    fmt: &'f NumberFormat,
+    fmt: &'f dyn NumberWriter,
 }
 
 impl DataPrinter<'_> {
@@ -602,7 +530,7 @@ impl DataPrinter<'_> {
 }
 
 /// The whole `mj_printData` dump as text.
-pub fn data_text(mv: Model, d: &view::Data, fmt: &NumberFormat) -> String {
+pub fn data_text(mv: Model, d: &view::Data, fmt: &dyn NumberWriter) -> String {
     let m = mv.raw;
     let h = &*d.raw;
     let mut p = DataPrinter {

@@ -32,6 +32,9 @@ pub fn subtree_mass(mm: &mut ModelMut, nbody: usize) {
 pub struct Consts {
     pub dof_m0: Vec<f64>,
     pub actuator_length0: Vec<f64>,
+    pub tendon_length0: Vec<f64>,
+    pub tendon_invweight0: Vec<f64>,
+    pub tendon_lengthspring: Vec<f64>,
     pub body_invweight0: Vec<f64>,
     pub dof_invweight0: Vec<f64>,
     pub actuator_acc0: Vec<f64>,
@@ -51,9 +54,10 @@ pub fn compute(m: &Model, d: &mut Data) -> Result<Consts, EngineError> {
     crb(m, d, false);
     let dof_m0: Vec<f64> = (0..nv).map(|i| d.qM[m.dof_Madr()[i] as usize]).collect();
     factor_m(m, d)?;
-    tendon(m)?;
+    tendon(m, d)?;
     transmission(m, d)?;
     let actuator_length0 = d.actuator_length.to_vec();
+    let tendon_length0 = d.ten_length.to_vec();
 
     let jacm = d.arena.alloc(6 * nv)?;
     let tmp = d.arena.alloc(6 * nv)?;
@@ -106,6 +110,8 @@ pub fn compute(m: &Model, d: &mut Data) -> Result<Consts, EngineError> {
         }
     }
 
+    let tendon_invweight0 = tendon_invweight(m, d, tmp)?;
+
     let mut actuator_acc0 = vec![0.0; nu];
     if nv > 0 {
         for (i, acc0) in actuator_acc0.iter_mut().enumerate() {
@@ -155,12 +161,18 @@ pub fn compute(m: &Model, d: &mut Data) -> Result<Consts, EngineError> {
     d.qpos.copy_from_slice(m.qpos_spring());
     kinematics(m, d)?;
     com_pos(m, d)?;
-    tendon(m)?;
+    tendon(m, d)?;
     transmission(m, d)?;
+    let tendon_lengthspring = (m.tendon_lengthspring().iter().zip(d.ten_length.iter()))
+        .map(|(&s, &l)| if s < 0.0 { l } else { s })
+        .collect();
 
     Ok(Consts {
         dof_m0,
         actuator_length0,
+        tendon_length0,
+        tendon_invweight0,
+        tendon_lengthspring,
         body_invweight0,
         dof_invweight0,
         actuator_acc0,
@@ -169,6 +181,31 @@ pub fn compute(m: &Model, d: &mut Data) -> Result<Consts, EngineError> {
         light,
         stat,
     })
+}
+
+/// tendon_invweight0 = J M^-1 J' per tendon at qpos0; `tmp` is scratch of 2*nv.
+fn tendon_invweight(m: &Model, d: &Data, tmp: &mut [f64]) -> Result<Vec<f64>, EngineError> {
+    let nv = m.raw.nv as usize;
+    let mut w = m.tendon_invweight0().to_vec();
+    if nv == 0 {
+        return Ok(w);
+    }
+    let sparse = super::jacdif::is_sparse(m);
+    for (i, wi) in w.iter_mut().enumerate() {
+        let (jrow, x) = tmp.split_at_mut(nv);
+        if sparse {
+            jrow.fill(0.0);
+            let adr = d.ten_J_rowadr[i] as usize;
+            for j in adr..adr + d.ten_J_rownnz[i] as usize {
+                jrow[d.ten_J_colind[j] as usize] = d.ten_J[j];
+            }
+        } else {
+            jrow.copy_from_slice(&d.ten_J[i * nv..(i + 1) * nv]);
+        }
+        solve_ld(m, x, Some(jrow), 1, d.qLD, d.qLDiagInv);
+        *wi = dot(jrow, &x[..nv]);
+    }
+    Ok(w)
 }
 
 /// eq_data of connect and weld constraints completed from the qpos0 configuration.
@@ -297,6 +334,10 @@ fn set_stat(m: &Model, d: &Data, body: &mut [f64]) -> mjStatistic {
 pub fn store(mm: &mut ModelMut, stat_out: &mut mjStatistic, c: Consts) {
     mm.dof_M0.copy_from_slice(&c.dof_m0);
     mm.actuator_length0.copy_from_slice(&c.actuator_length0);
+    mm.tendon_length0.copy_from_slice(&c.tendon_length0);
+    mm.tendon_invweight0.copy_from_slice(&c.tendon_invweight0);
+    mm.tendon_lengthspring
+        .copy_from_slice(&c.tendon_lengthspring);
     mm.body_invweight0.copy_from_slice(&c.body_invweight0);
     mm.dof_invweight0.copy_from_slice(&c.dof_invweight0);
     mm.actuator_acc0.copy_from_slice(&c.actuator_acc0);

@@ -1,8 +1,37 @@
-//! Actuator transmissions: lengths and moment arms (joint and joint-in-parent only).
+//! Actuator transmissions: lengths and moment arms (joint, joint-in-parent, slider-crank,
+//! tendon, site with and without reference site, body adhesion without contacts).
 
+use super::jacdif::is_sparse;
+use super::jacobian::jac;
 use super::{not_implemented, Data, EngineError, Model, JNT_BALL, JNT_HINGE, JNT_SLIDE};
 use crate::abi::mjtTrn_;
+use crate::math::blas::{add_to, mul_mat_t_vec, scl, sub_from};
+use crate::math::misc::is_zero;
 use crate::math::*;
+
+const TRN_JOINT: i32 = mjtTrn_::mjTRN_JOINT as i32;
+const TRN_JOINTINPARENT: i32 = mjtTrn_::mjTRN_JOINTINPARENT as i32;
+const TRN_SLIDERCRANK: i32 = mjtTrn_::mjTRN_SLIDERCRANK as i32;
+const TRN_TENDON: i32 = mjtTrn_::mjTRN_TENDON as i32;
+const TRN_SITE: i32 = mjtTrn_::mjTRN_SITE as i32;
+const TRN_BODY: i32 = mjtTrn_::mjTRN_BODY as i32;
+
+/// Scratch for the Jacobian-based transmissions, 3 x nv each.
+struct Scratch<'s> {
+    jac: &'s mut [f64],
+    jac_a: &'s mut [f64],
+    jac_s: &'s mut [f64],
+    jac_ref: &'s mut [f64],
+}
+
+/// The kinematic quantities the Jacobian-based transmissions read.
+struct Kin<'k> {
+    site_xpos: &'k [f64],
+    site_xmat: &'k [f64],
+    xquat: &'k [f64],
+    cdof: &'k [f64],
+    subtree_com: &'k [f64],
+}
 
 /// actuator_length and actuator_moment (mj_transmission).
 pub fn transmission(m: &Model, d: &mut Data) -> Result<(), EngineError> {
@@ -13,48 +42,251 @@ pub fn transmission(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     }
     d.actuator_moment.fill(0.0);
     for i in 0..nu {
-        let id = m.actuator_trnid()[2 * i] as usize;
-        let gear = &m.actuator_gear()[6 * i..6 * i + 6];
-        let trn = m.actuator_trntype()[i];
-        let inparent = trn == mjtTrn_::mjTRN_JOINTINPARENT as i32;
-        if trn != mjtTrn_::mjTRN_JOINT as i32 && !inparent {
-            return Err(not_implemented(&format!(
-                "actuator transmission type {trn} is"
-            )));
-        }
-        let moment = &mut d.actuator_moment[i * nv..(i + 1) * nv];
-        let qadr = m.jnt_qposadr()[id] as usize;
-        let dadr = m.jnt_dofadr()[id] as usize;
-        match m.jnt_type()[id] {
-            JNT_SLIDE | JNT_HINGE => {
-                d.actuator_length[i] = d.qpos[qadr] * gear[0];
-                moment[dadr] = gear[0];
-            }
-            JNT_BALL => {
-                let q = q4(&d.qpos[qadr..]);
-                let axis = quat2vel(&q, 1.0);
-                let g = v3(gear);
-                let gear_axis = if inparent {
-                    rot_vec_quat(&g, &neg_quat(&q))
-                } else {
-                    g
+        let t = m.actuator_trntype()[i];
+        match t {
+            TRN_JOINT | TRN_JOINTINPARENT => joint(m, d, i),
+            TRN_TENDON => tendon(m, d, i),
+            TRN_BODY => body(m, d, i)?,
+            TRN_SLIDERCRANK | TRN_SITE => d.arena.scope(|a| -> Result<(), EngineError> {
+                let mut s = Scratch {
+                    jac: a.alloc(3 * nv)?,
+                    jac_a: a.alloc(3 * nv)?,
+                    jac_s: a.alloc(3 * nv)?,
+                    jac_ref: a.alloc(3 * nv)?,
                 };
-                d.actuator_length[i] = dot3(&axis, &gear_axis);
-                moment[dadr..dadr + 3].copy_from_slice(&gear_axis);
-            }
-            _ => {
-                d.actuator_length[i] = 0.0;
-                let q = q4(&d.qpos[qadr + 3..]);
-                let g = v3(&gear[3..]);
-                let gear_axis = if inparent {
-                    rot_vec_quat(&g, &neg_quat(&q))
-                } else {
-                    g
+                let k = Kin {
+                    site_xpos: d.site_xpos,
+                    site_xmat: d.site_xmat,
+                    xquat: d.xquat,
+                    cdof: d.cdof,
+                    subtree_com: d.subtree_com,
                 };
-                moment[dadr..dadr + 3].copy_from_slice(&gear[..3]);
-                moment[dadr + 3..dadr + 6].copy_from_slice(&gear_axis);
-            }
+                let moment = &mut d.actuator_moment[i * nv..(i + 1) * nv];
+                d.actuator_length[i] = if t == TRN_SITE {
+                    site(m, &k, &mut s, i, moment)
+                } else {
+                    slider_crank(m, &k, &mut s, i, moment)
+                };
+                Ok(())
+            })?,
+            _ => return Err(EngineError(format!("Unknown transmission type {t}"))),
         }
     }
     Ok(())
+}
+
+/// Slider-crank: length of the slider along its axis, with its derivatives; returns length.
+fn slider_crank(m: &Model, k: &Kin, s: &mut Scratch, i: usize, moment: &mut [f64]) -> f64 {
+    let nv = m.raw.nv as usize;
+    let id = m.actuator_trnid()[2 * i] as usize;
+    let ids = m.actuator_trnid()[2 * i + 1] as usize;
+    let gear = m.actuator_gear()[6 * i];
+    let rod = m.actuator_cranklength()[i];
+    let mat = &k.site_xmat[9 * ids..9 * ids + 9];
+    let axis = [mat[2], mat[5], mat[8]];
+    let spos = v3(&k.site_xpos[3 * ids..]);
+    let vec = sub3(&v3(&k.site_xpos[3 * id..]), &spos);
+
+    // length = a'v - sqrt(det), det = (a'v)^2 + r^2 - v'v
+    let av = dot3(&vec, &axis);
+    let det = av * av + rod * rod - dot3(&vec, &vec);
+    let (length, dlda, dldv) = if det <= 0.0 {
+        (av, vec, axis)
+    } else {
+        let sdet = det.sqrt();
+        let dldv = add3(&scl3(&axis, 1.0 - av / sdet), &scl3(&vec, 1.0 / sdet));
+        (av - sdet, scl3(&vec, 1.0 - av / sdet), dldv)
+    };
+
+    // Jacobians of the slider axis (jac_a) and of vec (jac)
+    point_axis(m, k, s, &spos, &axis, m.site_bodyid()[ids] as usize);
+    let pos = v3(&k.site_xpos[3 * id..]);
+    jac(
+        m,
+        k.cdof,
+        k.subtree_com,
+        &pos,
+        m.site_bodyid()[id] as usize,
+        Some(&mut *s.jac),
+        None,
+    );
+    sub_from(s.jac, s.jac_s);
+
+    for j in 0..nv {
+        for r in 0..3 {
+            moment[j] += dlda[r] * s.jac_a[r * nv + j] + dldv[r] * s.jac[r * nv + j];
+        }
+    }
+    for v in moment.iter_mut() {
+        *v *= gear;
+    }
+    length * gear
+}
+
+/// Point Jacobian into `s.jac_s` and the axis Jacobian into `s.jac_a` (mj_jacPointAxis).
+fn point_axis(m: &Model, k: &Kin, s: &mut Scratch, point: &Vec3, axis: &Vec3, body: usize) {
+    let nv = m.raw.nv as usize;
+    let jacr = &mut *s.jac_ref;
+    jac(
+        m,
+        k.cdof,
+        k.subtree_com,
+        point,
+        body,
+        Some(&mut *s.jac_s),
+        Some(&mut *jacr),
+    );
+    for j in 0..nv {
+        let c = cross(&[jacr[j], jacr[nv + j], jacr[2 * nv + j]], axis);
+        for r in 0..3 {
+            s.jac_a[r * nv + j] = c[r];
+        }
+    }
+}
+
+/// Tendon transmission: the tendon's length and Jacobian scaled by the gear.
+fn tendon(m: &Model, d: &mut Data, i: usize) {
+    let nv = m.raw.nv as usize;
+    let id = m.actuator_trnid()[2 * i] as usize;
+    let gear = m.actuator_gear()[6 * i];
+    d.actuator_length[i] = d.ten_length[id] * gear;
+    let moment = &mut d.actuator_moment[i * nv..(i + 1) * nv];
+    if is_sparse(m) {
+        let adr = d.ten_J_rowadr[id] as usize;
+        for j in adr..adr + d.ten_J_rownnz[id] as usize {
+            moment[d.ten_J_colind[j] as usize] = d.ten_J[j] * gear;
+        }
+    } else {
+        scl(moment, &d.ten_J[id * nv..(id + 1) * nv], gear);
+    }
+}
+
+/// Site transmission: wrench gear in the site frame, or the site's pose relative to a
+/// reference site; returns the length.
+fn site(m: &Model, k: &Kin, s: &mut Scratch, i: usize, moment: &mut [f64]) -> f64 {
+    let nv = m.raw.nv as usize;
+    let id = m.actuator_trnid()[2 * i] as usize;
+    let refid = m.actuator_trnid()[2 * i + 1];
+    let gear = &m.actuator_gear()[6 * i..6 * i + 6];
+    let (gt, gr) = (v3(gear), v3(&gear[3..]));
+    let body = |sid: usize| m.site_bodyid()[sid] as usize;
+    let pos = |sid: usize| v3(&k.site_xpos[3 * sid..]);
+    let xmat = |sid: usize| -> Mat3 { arr(&k.site_xmat[9 * sid..9 * sid + 9]) };
+    let (cdof, com) = (k.cdof, k.subtree_com);
+    jac(
+        m,
+        cdof,
+        com,
+        &pos(id),
+        body(id),
+        Some(&mut *s.jac),
+        Some(&mut *s.jac_s),
+    );
+
+    if refid < 0 {
+        let wt = mul_mat_vec3(&xmat(id), &gt);
+        let wr = mul_mat_vec3(&xmat(id), &gr);
+        mul_mat_t_vec(moment, s.jac, &wt, 3, nv);
+        mul_mat_t_vec(s.jac, s.jac_s, &wr, 3, nv);
+        add_to(moment, &s.jac[..nv]);
+        return 0.0;
+    }
+
+    let refid = refid as usize;
+    let rmat = xmat(refid);
+    let mut length = 0.0;
+    if !is_zero(&gt) {
+        let vec = mul_mat_t_vec3(&rmat, &sub3(&pos(id), &pos(refid)));
+        length += dot3(&vec, &gt);
+        jac(
+            m,
+            cdof,
+            com,
+            &pos(refid),
+            body(refid),
+            Some(&mut *s.jac_ref),
+            None,
+        );
+        sub_from(s.jac, s.jac_ref);
+        mul_mat_t_vec(moment, s.jac, &mul_mat_vec3(&rmat, &gt), 3, nv);
+    }
+    if !is_zero(&gr) {
+        let quat = |sid: usize| {
+            let b = body(sid);
+            mul_quat(&q4(&m.site_quat()[4 * sid..]), &q4(&k.xquat[4 * b..]))
+        };
+        let vec = sub_quat(&quat(id), &quat(refid));
+        length += dot3(&vec, &gr);
+        jac(
+            m,
+            cdof,
+            com,
+            &pos(refid),
+            body(refid),
+            None,
+            Some(&mut *s.jac_ref),
+        );
+        sub_from(s.jac_s, s.jac_ref);
+        let tmp = &mut s.jac_a[..nv];
+        mul_mat_t_vec(tmp, s.jac_s, &mul_mat_vec3(&rmat, &gr), 3, nv);
+        add_to(moment, tmp);
+    }
+    length
+}
+
+/// Body (adhesion) transmission: the moment averages the normal Jacobians of the body's
+/// contacts; without such contacts it stays zero.
+fn body(m: &Model, d: &mut Data, i: usize) -> Result<(), EngineError> {
+    let id = m.actuator_trnid()[2 * i];
+    d.actuator_length[i] = 0.0;
+    let ncon = d.raw.ncon.max(0) as usize;
+    for c in d.contact.iter().take(ncon) {
+        let b1 = m.geom_bodyid()[c.geom1 as usize];
+        let b2 = m.geom_bodyid()[c.geom2 as usize];
+        if b1 == id || b2 == id {
+            return Err(not_implemented("body transmission with contacts is"));
+        }
+    }
+    Ok(())
+}
+
+/// Joint transmission: scalar gear for slide/hinge, 3D or 6D wrench gear for ball/free.
+fn joint(m: &Model, d: &mut Data, i: usize) {
+    let nv = m.raw.nv as usize;
+    let id = m.actuator_trnid()[2 * i] as usize;
+    let gear = &m.actuator_gear()[6 * i..6 * i + 6];
+    let inparent = m.actuator_trntype()[i] == TRN_JOINTINPARENT;
+    let moment = &mut d.actuator_moment[i * nv..(i + 1) * nv];
+    let qadr = m.jnt_qposadr()[id] as usize;
+    let dadr = m.jnt_dofadr()[id] as usize;
+    match m.jnt_type()[id] {
+        JNT_SLIDE | JNT_HINGE => {
+            d.actuator_length[i] = d.qpos[qadr] * gear[0];
+            moment[dadr] = gear[0];
+        }
+        JNT_BALL => {
+            let q = q4(&d.qpos[qadr..]);
+            let axis = quat2vel(&q, 1.0);
+            let g = v3(gear);
+            let gear_axis = if inparent {
+                rot_vec_quat(&g, &neg_quat(&q))
+            } else {
+                g
+            };
+            d.actuator_length[i] = dot3(&axis, &gear_axis);
+            moment[dadr..dadr + 3].copy_from_slice(&gear_axis);
+        }
+        _ => {
+            d.actuator_length[i] = 0.0;
+            let q = q4(&d.qpos[qadr + 3..]);
+            let g = v3(&gear[3..]);
+            let gear_axis = if inparent {
+                rot_vec_quat(&g, &neg_quat(&q))
+            } else {
+                g
+            };
+            moment[dadr..dadr + 3].copy_from_slice(&gear[..3]);
+            moment[dadr + 3..dadr + 6].copy_from_slice(&gear_axis);
+        }
+    }
 }

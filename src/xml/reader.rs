@@ -13,7 +13,11 @@ pub fn xerr(el: &Element, msg: &str) -> String {
     )
 }
 
-fn parse_real<T: std::str::FromStr + From<f32> + PartialEq>(tok: &str) -> Option<T> {
+/// A number as C++ stream extraction reads it: overflow to infinity is a failure; "inf" and
+/// "nan" (optionally negative) are accepted spelled out.
+fn parse_real<T: std::str::FromStr + From<f32> + PartialEq + Copy + Into<f64>>(
+    tok: &str,
+) -> Option<T> {
     let body = tok.strip_prefix('-').unwrap_or(tok);
     let special = |s: &str| s.eq_ignore_ascii_case("inf") || s.eq_ignore_ascii_case("nan");
     if (tok.len() == 3 || (tok.len() == 4 && tok.starts_with('-'))) && special(body) {
@@ -31,11 +35,11 @@ fn parse_real<T: std::str::FromStr + From<f32> + PartialEq>(tok: &str) -> Option
     {
         return None;
     }
-    tok.parse::<T>().ok()
+    tok.parse::<T>().ok().filter(|v| !(*v).into().is_infinite())
 }
 
 /// Reads up to `out.len()` numbers of attribute `name`; returns how many (0: absent).
-fn read_nums<T: std::str::FromStr + From<f32> + Copy + PartialEq>(
+fn read_nums<T: std::str::FromStr + From<f32> + Copy + PartialEq + Into<f64>>(
     el: &Element,
     name: &str,
     out: &mut [T],
@@ -58,7 +62,9 @@ fn read_nums<T: std::str::FromStr + From<f32> + Copy + PartialEq>(
         let Some(tok) = toks.next() else { break };
         out[n] = parse_real::<T>(tok)
             .ok_or_else(|| xerr(el, &format!("problem reading attribute '{name}'")))?;
-        if out[n] != out[n] {
+        #[allow(clippy::eq_op)]
+        let nan = out[n] != out[n];
+        if nan {
             crate::capi::errmem::warning("XML contains a 'NaN'. Please check it carefully.");
         }
         n += 1;
@@ -234,7 +240,9 @@ fn one_geom(el: &Element, g: &mut Geom) -> R<()> {
     some_nums(el, "solimp", &mut g.solimp)?;
     num(el, "margin", &mut g.margin)?;
     num(el, "gap", &mut g.gap)?;
-    for a in ["hfield", "mesh", "material", "shellinertia"] {
+    text(el, "material", &mut g.material);
+    text(el, "hfield", &mut g.hfield);
+    for a in ["mesh", "shellinertia"] {
         if el.attr(a).is_some() {
             g.unsupported = Some(a);
         }
@@ -266,9 +274,7 @@ fn one_site(el: &Element, s: &mut Site) -> R<()> {
     int(el, "group", &mut s.group)?;
     nums(el, "pos", &mut s.pos)?;
     nums(el, "quat", &mut s.quat)?;
-    if el.attr("material").is_some() {
-        s.unsupported = Some("material");
-    }
+    text(el, "material", &mut s.material);
     rgba(el, &mut s.rgba)?;
     nums(el, "fromto", &mut s.fromto)?;
     alternative(el, &mut s.alt)?;
@@ -527,6 +533,366 @@ fn read_contact(spec: &mut ModelSpec, el: &Element) -> R<()> {
     Ok(())
 }
 
+/// mjtObj value of an object type name (0: unknown).
+fn obj_type(name: &str) -> i32 {
+    const NAMES: [&str; 23] = [
+        "unknown", "body", "xbody", "joint", "dof", "geom", "site", "camera", "light", "mesh",
+        "skin", "hfield", "texture", "material", "pair", "exclude", "equality", "tendon",
+        "actuator", "sensor", "numeric", "text", "tuple",
+    ];
+    if name == "key" {
+        return 23;
+    }
+    NAMES.iter().position(|n| *n == name).unwrap_or(0) as i32
+}
+
+/// Sensor element names in mjtSensor order, with the attribute naming their object and its mjtObj.
+const SENSORS: [(&str, &str, i32); 34] = [
+    ("touch", "site", 6),
+    ("accelerometer", "site", 6),
+    ("velocimeter", "site", 6),
+    ("gyro", "site", 6),
+    ("force", "site", 6),
+    ("torque", "site", 6),
+    ("magnetometer", "site", 6),
+    ("rangefinder", "site", 6),
+    ("jointpos", "joint", 3),
+    ("jointvel", "joint", 3),
+    ("tendonpos", "tendon", 17),
+    ("tendonvel", "tendon", 17),
+    ("actuatorpos", "actuator", 18),
+    ("actuatorvel", "actuator", 18),
+    ("actuatorfrc", "actuator", 18),
+    ("ballquat", "joint", 3),
+    ("ballangvel", "joint", 3),
+    ("jointlimitpos", "joint", 3),
+    ("jointlimitvel", "joint", 3),
+    ("jointlimitfrc", "joint", 3),
+    ("tendonlimitpos", "tendon", 17),
+    ("tendonlimitvel", "tendon", 17),
+    ("tendonlimitfrc", "tendon", 17),
+    ("framepos", "", 0),
+    ("framequat", "", 0),
+    ("framexaxis", "", 0),
+    ("frameyaxis", "", 0),
+    ("framezaxis", "", 0),
+    ("framelinvel", "", 0),
+    ("frameangvel", "", 0),
+    ("framelinacc", "", 0),
+    ("frameangacc", "", 0),
+    ("subtreecom", "body", 1),
+    ("subtreelinvel", "body", 1),
+];
+
+fn read_sensors(spec: &mut ModelSpec, el: &Element) -> R<()> {
+    for c in &el.children {
+        let mut s = Sensor::default();
+        text(c, "name", &mut s.name);
+        num(c, "cutoff", &mut s.cutoff)?;
+        num(c, "noise", &mut s.noise)?;
+        user(c, &mut s.user)?;
+        let mut tmp = String::new();
+        if let Some(k) = SENSORS.iter().position(|x| x.0 == c.name) {
+            s.kind = k as i32;
+            let (_, attr, objtype) = SENSORS[k];
+            if attr.is_empty() {
+                read_text(c, "objtype", &mut tmp)?;
+                s.objtype = obj_type(&tmp);
+                read_text(c, "objname", &mut s.objname)?;
+                if !c.name.ends_with("acc") {
+                    if text(c, "reftype", &mut tmp) {
+                        s.reftype = obj_type(&tmp);
+                        read_text(c, "refname", &mut s.refname)?;
+                    } else if text(c, "refname", &mut tmp) {
+                        return Err(xerr(
+                            c,
+                            &format!("refname '{tmp}' given but reftype is missing"),
+                        ));
+                    }
+                }
+            } else {
+                s.objtype = objtype;
+                read_text(c, attr, &mut s.objname)?;
+            }
+        } else {
+            match c.name.as_str() {
+                "subtreeangmom" => {
+                    s.kind = 34;
+                    s.objtype = 1;
+                    read_text(c, "body", &mut s.objname)?;
+                }
+                "clock" => s.kind = 35,
+                _ => {
+                    s.kind = 36;
+                    read_text(c, "objtype", &mut tmp)?;
+                    s.objtype = obj_type(&tmp);
+                    read_text(c, "objname", &mut s.objname)?;
+                    if c.attr("dim").is_none() {
+                        return Err(xerr(c, "required attribute missing: 'dim'"));
+                    }
+                    int(c, "dim", &mut s.dim)?;
+                    let stage = ["none", "pos", "vel", "acc"];
+                    s.needstage = keyword(c, "needstage", &stage)?
+                        .ok_or_else(|| xerr(c, "required attribute missing: 'needstage'"))?
+                        as i32;
+                    let dt = ["real", "positive", "axis", "quaternion"];
+                    s.datatype = keyword(c, "datatype", &dt)?
+                        .ok_or_else(|| xerr(c, "required attribute missing: 'datatype'"))?
+                        as i32;
+                }
+            }
+        }
+        spec.sensors.push(s);
+    }
+    Ok(())
+}
+
+fn one_equality(el: &Element, e: &mut Equality, in_default: bool) -> R<()> {
+    let kinds = ["connect", "weld", "joint", "tendon", "distance"];
+    e.kind = kinds
+        .iter()
+        .position(|k| *k == el.name)
+        .map_or(-1, |k| k as i32);
+    if !in_default {
+        text(el, "name", &mut e.name);
+        let (a1, a2) = match e.kind {
+            0 | 1 => ("body1", "body2"),
+            2 => ("joint1", "joint2"),
+            3 => ("tendon1", "tendon2"),
+            4 => {
+                return Err(xerr(
+                    el,
+                    "support for distance equality contraints was removed in MuJoCo 2.2.2",
+                ))
+            }
+            _ => return Err(xerr(el, "unrecognized equality constraint type")),
+        };
+        read_text(el, a1, &mut e.name1)?;
+        text(el, a2, &mut e.name2);
+        match e.kind {
+            0 => {
+                read_nums(el, "anchor", &mut e.data[..3], true, true)?;
+            }
+            1 => {
+                nums(el, "relpose", &mut e.data[3..10])?;
+                num(el, "torquescale", &mut e.data[10])?;
+                if !nums(el, "anchor", &mut e.data[..3])? {
+                    e.data[..3].fill(0.0);
+                }
+            }
+            _ => {
+                nums(el, "polycoef", &mut e.data[..5])?;
+            }
+        }
+    }
+    if let Some(b) = boolean(el, "active")? {
+        e.active = b;
+    }
+    some_nums(el, "solref", &mut e.solref)?;
+    some_nums(el, "solimp", &mut e.solimp)?;
+    e.line = el.line;
+    Ok(())
+}
+
+fn one_tendon(el: &Element, t: &mut Tendon) -> R<()> {
+    text(el, "name", &mut t.name);
+    int(el, "group", &mut t.group)?;
+    text(el, "material", &mut t.material);
+    tf_auto(el, "limited", &mut t.limited)?;
+    num(el, "width", &mut t.width)?;
+    some_nums(el, "solreflimit", &mut t.solref_limit)?;
+    some_nums(el, "solimplimit", &mut t.solimp_limit)?;
+    some_nums(el, "solreffriction", &mut t.solref_friction)?;
+    some_nums(el, "solimpfriction", &mut t.solimp_friction)?;
+    nums(el, "range", &mut t.range)?;
+    num(el, "margin", &mut t.margin)?;
+    num(el, "stiffness", &mut t.stiffness)?;
+    num(el, "damping", &mut t.damping)?;
+    num(el, "frictionloss", &mut t.frictionloss)?;
+    num(el, "springlength", &mut t.springlength)?;
+    rgba(el, &mut t.rgba)?;
+    user(el, &mut t.user)?;
+    t.line = el.line;
+    Ok(())
+}
+
+fn read_tendons(spec: &mut ModelSpec, el: &Element) -> R<()> {
+    for c in &el.children {
+        let def = class_of(spec, c)?.unwrap_or(0);
+        let mut t = spec.defaults[def].tendon.clone();
+        one_tendon(c, &mut t)?;
+        for w in &c.children {
+            let mut wrap = Wrap {
+                line: w.line,
+                ..Wrap::default()
+            };
+            match w.name.as_str() {
+                "site" => {
+                    wrap.kind = 3;
+                    read_text(w, "site", &mut wrap.name)?;
+                }
+                "geom" => {
+                    wrap.kind = 4;
+                    read_text(w, "geom", &mut wrap.name)?;
+                    text(w, "sidesite", &mut wrap.sidesite);
+                }
+                "pulley" => {
+                    wrap.kind = 2;
+                    read_nums(
+                        w,
+                        "divisor",
+                        std::slice::from_mut(&mut wrap.prm),
+                        true,
+                        true,
+                    )?;
+                }
+                "joint" => {
+                    wrap.kind = 1;
+                    read_text(w, "joint", &mut wrap.name)?;
+                    read_nums(w, "coef", std::slice::from_mut(&mut wrap.prm), true, true)?;
+                }
+                _ => return Err(xerr(w, "unknown wrap type")),
+            }
+            t.path.push(wrap);
+        }
+        spec.tendons.push(t);
+    }
+    Ok(())
+}
+
+fn one_material(el: &Element, m: &mut Material) -> R<()> {
+    text(el, "name", &mut m.name);
+    text(el, "texture", &mut m.texture);
+    if let Some(b) = boolean(el, "texuniform")? {
+        m.texuniform = b;
+    }
+    floats(el, "texrepeat", &mut m.texrepeat)?;
+    f1(el, "emission", &mut m.emission)?;
+    f1(el, "specular", &mut m.specular)?;
+    f1(el, "shininess", &mut m.shininess)?;
+    f1(el, "reflectance", &mut m.reflectance)?;
+    floats(el, "rgba", &mut m.rgba)?;
+    m.line = el.line;
+    Ok(())
+}
+
+fn read_assets(spec: &mut ModelSpec, el: &Element) -> R<()> {
+    for c in &el.children {
+        let def = class_of(spec, c)?.unwrap_or(0);
+        match c.name.as_str() {
+            "texture" => {
+                let mut t = Texture {
+                    line: c.line,
+                    ..Texture::default()
+                };
+                if let Some(i) = keyword(c, "type", &["2d", "cube", "skybox"])? {
+                    t.kind = i as i32;
+                }
+                text(c, "name", &mut t.name);
+                int(c, "width", &mut t.width)?;
+                int(c, "height", &mut t.height)?;
+                nums(c, "rgb1", &mut t.rgb1)?;
+                nums(c, "rgb2", &mut t.rgb2)?;
+                nums(c, "markrgb", &mut t.markrgb)?;
+                num(c, "random", &mut t.random)?;
+                if let Some(i) = keyword(c, "builtin", &["none", "gradient", "checker", "flat"])? {
+                    t.builtin = i as i32;
+                }
+                if let Some(i) = keyword(c, "mark", &["none", "edge", "cross", "random"])? {
+                    t.mark = i as i32;
+                }
+                boolean(c, "hflip")?;
+                boolean(c, "vflip")?;
+                let files = [
+                    "file",
+                    "fileright",
+                    "fileleft",
+                    "fileup",
+                    "filedown",
+                    "filefront",
+                    "fileback",
+                ];
+                t.files = files.iter().any(|f| c.attr(f).is_some());
+                spec.textures.push(t);
+            }
+            "hfield" => {
+                let mut hf = HField {
+                    line: c.line,
+                    ..HField::default()
+                };
+                text(c, "name", &mut hf.name);
+                text(c, "file", &mut hf.file);
+                int(c, "nrow", &mut hf.nrow)?;
+                int(c, "ncol", &mut hf.ncol)?;
+                read_nums(c, "size", &mut hf.size, true, true)?;
+                spec.hfields.push(hf);
+            }
+            "material" => {
+                let mut m = spec.defaults[def].material.clone();
+                one_material(c, &mut m)?;
+                spec.materials.push(m);
+            }
+            other => return Err(unsupported(c, other)),
+        }
+    }
+    Ok(())
+}
+
+fn read_custom(spec: &mut ModelSpec, el: &Element) -> R<()> {
+    let c = &mut spec.custom;
+    for e in &el.children {
+        let mut name = String::new();
+        read_text(e, "name", &mut name)?;
+        match e.name.as_str() {
+            "numeric" => {
+                let mut size = 0;
+                let given = int(e, "size", &mut size)?;
+                let mut buf = vec![0.0; 501];
+                let cap = if given {
+                    size.clamp(0, 501) as usize
+                } else {
+                    501
+                };
+                let len = some_nums(e, "data", &mut buf[..cap])?;
+                if !given {
+                    size = len as i32;
+                }
+                if !(1..=500).contains(&size) {
+                    return Err(xerr(e, "custom field size must be between 1 and 500"));
+                }
+                buf.truncate(size as usize);
+                c.numerics.push((name, e.line, buf));
+            }
+            "text" => {
+                let mut data = String::new();
+                read_text(e, "data", &mut data)?;
+                if data.is_empty() {
+                    return Err(xerr(e, "text field cannot be empty"));
+                }
+                c.texts.push((name, e.line, data));
+            }
+            _ => {
+                let mut elems = Vec::new();
+                for o in e.children.iter().filter(|o| o.name == "element") {
+                    let mut t = String::new();
+                    read_text(o, "objtype", &mut t)?;
+                    let kind = obj_type(&t);
+                    if kind == 0 {
+                        return Err(xerr(o, "unknown object type"));
+                    }
+                    let mut oname = String::new();
+                    read_text(o, "objname", &mut oname)?;
+                    let mut prm = 0.0;
+                    num(o, "prm", &mut prm)?;
+                    elems.push((kind, oname, prm));
+                }
+                c.tuples.push((name, e.line, elems));
+            }
+        }
+    }
+    Ok(())
+}
+
 fn unsupported(el: &Element, what: &str) -> String {
     xerr(
         el,
@@ -581,6 +947,9 @@ fn read_default(spec: &mut ModelSpec, el: &Element, parent: Option<usize>) -> R<
             "camera" => one_camera(c, &mut d.camera)?,
             "light" => one_light(c, &mut d.light)?,
             "pair" => one_pair(c, &mut d.pair, true)?,
+            "material" => one_material(c, &mut d.material)?,
+            "equality" => one_equality(c, &mut d.equality, true)?,
+            "tendon" => one_tendon(c, &mut d.tendon)?,
             n if ACTUATORS.contains(&n) => one_actuator(c, &mut d.actuator)?,
             "default" => {}
             other => return Err(unsupported(c, other)),
@@ -1016,6 +1385,12 @@ pub fn read(root: &Element) -> R<ModelSpec> {
     for s in sections("default") {
         read_default(&mut spec, s, None)?;
     }
+    for s in sections("custom") {
+        read_custom(&mut spec, s)?;
+    }
+    for s in sections("asset") {
+        read_assets(&mut spec, s)?;
+    }
     for s in sections("worldbody") {
         let mut world = std::mem::take(&mut spec.world);
         let r = read_body(&spec, s, &mut world, 0, true);
@@ -1024,6 +1399,17 @@ pub fn read(root: &Element) -> R<ModelSpec> {
     }
     for s in sections("contact") {
         read_contact(&mut spec, s)?;
+    }
+    for s in sections("equality") {
+        for c in &s.children {
+            let def = class_of(&spec, c)?.unwrap_or(0);
+            let mut e = spec.defaults[def].equality.clone();
+            one_equality(c, &mut e, false)?;
+            spec.equalities.push(e);
+        }
+    }
+    for s in sections("tendon") {
+        read_tendons(&mut spec, s)?;
     }
     for s in sections("actuator") {
         for a in &s.children {
@@ -1036,10 +1422,13 @@ pub fn read(root: &Element) -> R<ModelSpec> {
             spec.actuators.push(act);
         }
     }
+    for s in sections("sensor") {
+        read_sensors(&mut spec, s)?;
+    }
     for s in sections("keyframe") {
         read_keys(&mut spec, s)?;
     }
-    const KNOWN: [&str; 10] = [
+    const KNOWN: [&str; 15] = [
         "compiler",
         "option",
         "size",
@@ -1047,8 +1436,13 @@ pub fn read(root: &Element) -> R<ModelSpec> {
         "statistic",
         "default",
         "worldbody",
+        "asset",
+        "custom",
         "contact",
+        "equality",
+        "tendon",
         "actuator",
+        "sensor",
         "keyframe",
     ];
     for c in &root.children {

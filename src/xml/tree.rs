@@ -43,12 +43,17 @@ impl Lines {
 fn element(e: &BytesStart, line: i32) -> Result<Element, String> {
     let name = String::from_utf8_lossy(e.name().as_ref()).into_owned();
     let mut attrs: Vec<(String, String)> = Vec::new();
+    // malformed or repeated attributes are reported as tinyxml2 reports them
+    let bad = || {
+        format!(
+            "XML parse error 7:\nError=XML_ERROR_PARSING_ATTRIBUTE ErrorID=7 (0x7) \
+             Line number={line}: XMLElement name={name}\n"
+        )
+    };
     for a in e.attributes().with_checks(true) {
-        let a = a.map_err(|err| format!("XML parse error: {err}, line {line}"))?;
+        let a = a.map_err(|_| bad())?;
         let key = String::from_utf8_lossy(a.key.as_ref()).into_owned();
-        let value = a
-            .unescape_value()
-            .map_err(|err| format!("XML parse error: {err}, line {line}"))?;
+        let value = a.unescape_value().map_err(|_| bad())?;
         attrs.push((key, value.into_owned()));
     }
     Ok(Element {
@@ -79,6 +84,12 @@ pub fn parse(text: &str) -> Result<Element, String> {
                      Line number={line}: XMLElement name={name}\n"
                 ));
             }
+            // a stray end tag after the root is ignored, as tinyxml2 does
+            Err(quick_xml::Error::IllFormed(
+                quick_xml::errors::IllFormedError::UnmatchedEndTag(_),
+            )) if stack.is_empty() && root.is_some() => {
+                continue;
+            }
             Err(err) => {
                 let at = lines.line(reader.error_position() as usize);
                 return Err(format!("XML parse error: {err}\nLine number={at}\n"));
@@ -93,26 +104,14 @@ pub fn parse(text: &str) -> Result<Element, String> {
             )
         };
         match ev {
-            Event::Start(e) => {
-                let el = element(&e, tag_line())?;
-                if root.is_some() && stack.is_empty() {
-                    return Err(format!(
-                        "XML parse error: more than one root element\nLine number={}\n",
-                        el.line
-                    ));
-                }
-                stack.push(el);
-            }
+            // later top-level elements are parsed and dropped: tinyxml2's root is the first
+            Event::Start(e) => stack.push(element(&e, tag_line())?),
             Event::Empty(e) => {
                 let el = element(&e, tag_line())?;
                 match stack.last_mut() {
                     Some(parent) => parent.children.push(el),
-                    None if root.is_none() => root = Some(el),
                     None => {
-                        return Err(format!(
-                            "XML parse error: more than one root element\nLine number={}\n",
-                            el.line
-                        ))
+                        root.get_or_insert(el);
                     }
                 }
             }
@@ -120,25 +119,25 @@ pub fn parse(text: &str) -> Result<Element, String> {
                 let el = stack.pop().ok_or("XML parse error: unmatched end tag")?;
                 match stack.last_mut() {
                     Some(parent) => parent.children.push(el),
-                    None => root = Some(el),
+                    None => {
+                        root.get_or_insert(el);
+                    }
                 }
             }
             Event::Eof => break,
-            Event::Text(t) => {
-                if stack.is_empty() && !t.iter().all(|b| b.is_ascii_whitespace()) {
-                    return Err(format!(
-                        "XML parse error: text outside the root element\nLine number={}\n",
-                        lines.line(before)
-                    ));
-                }
+            Event::Text(t) if stack.is_empty() && !t.iter().all(|b| b.is_ascii_whitespace()) => {
+                return Err(format!(
+                    "XML parse error: text outside the root element\nLine number={}\n",
+                    lines.line(before)
+                ));
             }
             _ => {}
         }
     }
     if let Some(open) = stack.last() {
         return Err(format!(
-            "XML parse error: element '{}' is not closed\nLine number={}\n",
-            open.name, open.line
+            "XML parse error 15:\nError=XML_ERROR_PARSING ErrorID=15 (0xf) Line number={}\n",
+            open.line
         ));
     }
     root.ok_or_else(|| {

@@ -1,0 +1,207 @@
+//! Builtin textures (gradient, checker, flat; edge, cross and random marks), as 2.2.2 draws them.
+
+use super::spec::Texture;
+
+/// The C library's `rand()` after `srand(seed)` (glibc's additive feedback generator), which
+/// 2.2.2 seeds with 123 before compiling so random texture marks are reproducible.
+pub struct CRand {
+    r: Vec<u32>,
+    i: usize,
+}
+
+impl CRand {
+    pub fn new(seed: u32) -> Self {
+        let mut r = vec![0u32; 34];
+        r[0] = if seed == 0 { 1 } else { seed };
+        for i in 1..31 {
+            let prev = r[i - 1] as i32 as i64;
+            let (hi, lo) = (prev / 127773, prev % 127773);
+            let mut word = 16807 * lo - 2836 * hi;
+            if word < 0 {
+                word += 2147483647;
+            }
+            r[i] = word as u32;
+        }
+        for i in 31..34 {
+            r[i] = r[i - 31];
+        }
+        let mut g = CRand { r, i: 34 };
+        for _ in 34..344 {
+            g.step();
+        }
+        g
+    }
+
+    fn step(&mut self) -> u32 {
+        let v = self.r[self.i - 31].wrapping_add(self.r[self.i - 3]);
+        self.r.push(v);
+        self.i += 1;
+        if self.r.len() > 4096 {
+            self.r.drain(..self.r.len() - 64);
+            self.i = self.r.len();
+        }
+        v
+    }
+
+    /// Next value in 0..=RAND_MAX.
+    pub fn rand(&mut self) -> i32 {
+        (self.step() >> 1) as i32
+    }
+}
+
+const RAND_MAX: f64 = 2147483647.0;
+
+fn byte(x: f64) -> u8 {
+    (255.0 * x) as u8
+}
+
+fn rgb3(c: &[f64; 3]) -> [u8; 3] {
+    [byte(c[0]), byte(c[1]), byte(c[2])]
+}
+
+/// Sigmoid blend of two colors by `pos` in (-1, 1).
+fn interp(rgb1: &[f64; 3], rgb2: &[f64; 3], pos: f64) -> [u8; 3] {
+    let correction = 1.0 / 2f64.sqrt();
+    let alpha = (0.5 * (1.0 + pos / (1.0 + pos * pos).sqrt() / correction)).clamp(0.0, 1.0);
+    let mut out = [0u8; 3];
+    for j in 0..3 {
+        out[j] = byte(alpha * rgb1[j] + (1.0 - alpha) * rgb2[j]);
+    }
+    out
+}
+
+fn set(img: &mut [u8], width: usize, r: usize, c: usize, v: [u8; 3]) {
+    let k = 3 * (r * width + c);
+    img[k..k + 3].copy_from_slice(&v);
+}
+
+fn checker(img: &mut [u8], a: [u8; 3], b: [u8; 3], width: usize, height: usize) {
+    for r in 0..height {
+        for c in 0..width {
+            let first = (r < height / 2) == (c < width / 2);
+            set(img, width, r, c, if first { a } else { b });
+        }
+    }
+}
+
+fn marks(img: &mut [u8], t: &Texture, width: usize, height: usize, faces: usize, rng: &mut CRand) {
+    let m = rgb3(&t.markrgb);
+    let face = 3 * width * height;
+    match t.mark {
+        1 => {
+            for f in 0..faces {
+                let img = &mut img[f * face..(f + 1) * face];
+                for r in 0..height {
+                    set(img, width, r, 0, m);
+                    set(img, width, r, width - 1, m);
+                }
+                for c in 0..width {
+                    set(img, width, 0, c, m);
+                    set(img, width, height - 1, c, m);
+                }
+            }
+        }
+        2 => {
+            for f in 0..faces {
+                let img = &mut img[f * face..(f + 1) * face];
+                for r in 0..height {
+                    set(img, width, r, width / 2, m);
+                }
+                for c in 0..width {
+                    set(img, width, height / 2, c, m);
+                }
+            }
+        }
+        3 if t.random > 0.0 => {
+            let total = faces * width * height;
+            for p in 0..total {
+                if (rng.rand() as f64) < t.random * RAND_MAX {
+                    img[3 * p..3 * p + 3].copy_from_slice(&m);
+                }
+            }
+        }
+        _ => {}
+    }
+}
+
+/// Pixels (RGB bytes) of a builtin texture; `height` is the full height (6 faces for cubes).
+pub fn builtin(t: &Texture, width: usize, height: usize, rng: &mut CRand) -> Vec<u8> {
+    let mut img = vec![0u8; 3 * width * height];
+    let (c1, c2) = (rgb3(&t.rgb1), rgb3(&t.rgb2));
+    // 2*k/(n-1) evaluated as the C source does: integer product, then a double division
+    let pixel = |k: usize, n: usize| (2 * k) as f64 / (n as f64 - 1.0);
+    if t.kind == 0 {
+        match t.builtin {
+            1 => {
+                for r in 0..height {
+                    for c in 0..width {
+                        let x = pixel(c, width) - 1.0;
+                        let y = 1.0 - pixel(r, height);
+                        let pos = 2.0 * (x * x + y * y).sqrt() - 1.0;
+                        set(&mut img, width, r, c, interp(&t.rgb2, &t.rgb1, pos));
+                    }
+                }
+            }
+            2 => checker(&mut img, c1, c2, width, height),
+            3 => img.chunks_mut(3).for_each(|p| p.copy_from_slice(&c1)),
+            _ => {}
+        }
+        marks(&mut img, t, width, height, 1, rng);
+    } else {
+        let face = 3 * width * width;
+        match t.builtin {
+            1 => {
+                for r in 0..width {
+                    for c in 0..width {
+                        let x = pixel(c, width) - 1.0;
+                        let y = 1.0 - pixel(r, width);
+                        let norm = (1.0 + x * x + y * y).sqrt();
+                        let half_pi = 0.5 * std::f64::consts::PI;
+                        let elside = (y / norm).asin() / half_pi;
+                        let elup = 1.0 - (1.0 / norm).acos() / half_pi;
+                        let side = interp(&t.rgb1, &t.rgb2, elside);
+                        for f in [0, 1, 4, 5] {
+                            set(&mut img[f * face..], width, r, c, side);
+                        }
+                        set(
+                            &mut img[2 * face..],
+                            width,
+                            r,
+                            c,
+                            interp(&t.rgb1, &t.rgb2, elup),
+                        );
+                        set(
+                            &mut img[3 * face..],
+                            width,
+                            r,
+                            c,
+                            interp(&t.rgb1, &t.rgb2, -elup),
+                        );
+                    }
+                }
+            }
+            2 => {
+                for f in 0..6 {
+                    let (a, b) = if f < 4 { (c1, c2) } else { (c2, c1) };
+                    checker(&mut img[f * face..(f + 1) * face], a, b, width, width);
+                }
+            }
+            3 => {
+                for f in 0..6 {
+                    let v = if f == 3 { c2 } else { c1 };
+                    img[f * face..(f + 1) * face]
+                        .chunks_mut(3)
+                        .for_each(|p| p.copy_from_slice(&v));
+                }
+            }
+            _ => {}
+        }
+        // random marks cover the whole image; edges and crosses each face
+        if t.mark == 3 {
+            marks(&mut img, t, width, height, 1, rng);
+        } else {
+            marks(&mut img, t, width, width, 6, rng);
+        }
+    }
+    img
+}

@@ -1,0 +1,616 @@
+//! Constraint solvers (dense Jacobian): warm start, projected Gauss-Seidel in the dual, and the
+//! primal conjugate-gradient and Newton methods with their exact line search (mj_fwdConstraint).
+
+use super::constraint::{constraint_update, is_sparse, mul_jac_t_vec, mul_jac_vec, with_arena};
+use super::inertia::solve_ld;
+use super::jacobian::{add_m_dense, mul_m};
+use super::{disabled, not_implemented, tick, Data, EngineError, Model, MINVAL};
+use crate::abi::view::Arena;
+use crate::abi::*;
+use crate::math::blas::{dot, mul_mat_vec, norm, sqr_mat_td};
+use crate::math::chol::{chol_factor, chol_solve, chol_update};
+use mjtConstraintState_::*;
+
+const SATISFIED: i32 = mjCNSTRSTATE_SATISFIED as i32;
+const QUADRATIC: i32 = mjCNSTRSTATE_QUADRATIC as i32;
+const LINEARNEG: i32 = mjCNSTRSTATE_LINEARNEG as i32;
+const LINEARPOS: i32 = mjCNSTRSTATE_LINEARPOS as i32;
+const CONE: i32 = mjCNSTRSTATE_CONE as i32;
+
+/// Cost or gradient scaled by the mean inertia and the number of dofs.
+fn rescale(m: &Model, x: f64) -> f64 {
+    x / (m.raw.stat.meaninertia * m.raw.nv.max(1) as f64)
+}
+
+/// Records one iteration's statistics and counts it.
+#[allow(clippy::too_many_arguments)]
+fn save_stats(
+    d: &mut Data,
+    iter: &mut i32,
+    improvement: f64,
+    gradient: f64,
+    lineslope: f64,
+    nactive: i32,
+    nchange: i32,
+    neval: i32,
+    nupdate: i32,
+) {
+    let i = (d.raw.solver_iter + *iter) as usize;
+    *iter += 1;
+    if i < mjNSOLVER as usize {
+        let s = &mut d.raw.solver[i];
+        s.improvement = improvement;
+        s.gradient = gradient;
+        s.lineslope = lineslope;
+        s.nactive = nactive;
+        s.nchange = nchange;
+        s.neval = neval;
+        s.nupdate = nupdate;
+    }
+}
+
+/// mj_fwdConstraint: qacc, efc_force and qfrc_constraint from the selected solver.
+pub fn fwd_constraint(m: &Model, d: &mut Data) -> Result<(), EngineError> {
+    let nv = m.raw.nv as usize;
+    let nefc = d.raw.nefc as usize;
+    if nefc == 0 {
+        d.qacc.copy_from_slice(d.qacc_smooth);
+        d.qacc_warmstart.copy_from_slice(d.qacc_smooth);
+        d.qfrc_constraint.fill(0.0);
+        d.raw.solver_iter = 0;
+        return Ok(());
+    }
+    if is_sparse(m) {
+        return Err(not_implemented("the sparse constraint Jacobian is"));
+    }
+    if m.raw.opt.noslip_iterations > 0 {
+        return Err(not_implemented("the noslip solver is"));
+    }
+    mul_jac_vec(m, nefc, d.efc_J, d.efc_b, d.qacc_smooth);
+    for i in 0..nefc {
+        d.efc_b[i] -= d.efc_aref[i];
+    }
+    with_arena(d, |d, a| warmstart(m, d, a))?;
+    d.raw.solver_iter = 0;
+    let maxiter = m.raw.opt.iterations;
+    match m.raw.opt.solver {
+        s if s == mjtSolver_::mjSOL_PGS as i32 => with_arena(d, |d, a| pgs(m, d, a, maxiter))?,
+        s if s == mjtSolver_::mjSOL_CG as i32 => {
+            with_arena(d, |d, a| cg_newton(m, d, a, maxiter, false))?
+        }
+        s if s == mjtSolver_::mjSOL_NEWTON as i32 => {
+            with_arena(d, |d, a| cg_newton(m, d, a, maxiter, true))?
+        }
+        s => return Err(EngineError(format!("Unknown solver type {s}"))),
+    }
+    d.qacc_warmstart[..nv].copy_from_slice(&d.qacc[..nv]);
+    tick(d, mjtTimer_::mjTIMER_CONSTRAINT);
+    Ok(())
+}
+
+/// Starts from the better of qacc_warmstart and qacc_smooth (PGS: of the warm-start forces
+/// and zero).
+fn warmstart(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> {
+    let nv = m.raw.nv as usize;
+    let nefc = d.raw.nefc as usize;
+    if disabled(m, mjtDisableBit_::mjDSBL_WARMSTART) {
+        d.qacc.copy_from_slice(d.qacc_smooth);
+        d.efc_force[..nefc].fill(0.0);
+        return Ok(());
+    }
+    let jar = a.alloc(nefc)?;
+    d.qacc.copy_from_slice(d.qacc_warmstart);
+    mul_jac_vec(m, nefc, d.efc_J, jar, d.qacc_warmstart);
+    for i in 0..nefc {
+        jar[i] -= d.efc_aref[i];
+    }
+    let mut cost_warmstart = constraint_update(m, d, jar, true)?;
+    if m.raw.opt.solver == mjtSolver_::mjSOL_PGS as i32 {
+        let mut pgs_warmstart = dot(d.efc_force, d.efc_b, nefc);
+        let arf = a.alloc(nefc)?;
+        mul_mat_vec(arf, d.efc_AR, d.efc_force, nefc, nefc);
+        pgs_warmstart += 0.5 * dot(d.efc_force, arf, nefc);
+        if pgs_warmstart > 0.0 {
+            d.efc_force[..nefc].fill(0.0);
+            d.qfrc_constraint[..nv].fill(0.0);
+        }
+    } else {
+        let ma = a.alloc(nv)?;
+        mul_m(m, d.qM, ma, d.qacc_warmstart);
+        for i in 0..nv {
+            cost_warmstart +=
+                0.5 * (ma[i] - d.qfrc_smooth[i]) * (d.qacc_warmstart[i] - d.qacc_smooth[i]);
+        }
+        let b = std::mem::take(&mut d.efc_b);
+        let cost_smooth = constraint_update(m, d, b, true);
+        d.efc_b = b;
+        if cost_warmstart > cost_smooth? {
+            d.qacc.copy_from_slice(d.qacc_smooth);
+        }
+    }
+    Ok(())
+}
+
+/// efc_state from dual forces; returns the number of active constraints.
+fn dual_state(d: &mut Data) -> Result<i32, EngineError> {
+    let (ne, nf, nefc) = (d.raw.ne as usize, d.raw.nf as usize, d.raw.nefc as usize);
+    let (force, floss, state) = (&*d.efc_force, &*d.efc_frictionloss, &mut *d.efc_state);
+    let mut nactive = (ne + nf) as i32;
+    for s in &mut state[..ne] {
+        *s = QUADRATIC;
+    }
+    for i in ne..ne + nf {
+        state[i] = if force[i] <= -floss[i] {
+            LINEARPOS
+        } else if force[i] >= floss[i] {
+            LINEARNEG
+        } else {
+            QUADRATIC
+        };
+    }
+    for i in ne + nf..nefc {
+        if d.efc_type[i] == mjtConstraint_::mjCNSTR_CONTACT_ELLIPTIC as i32 {
+            return Err(not_implemented("elliptic contact constraints are"));
+        }
+        if force[i] <= 0.0 {
+            state[i] = SATISFIED;
+        } else {
+            state[i] = QUADRATIC;
+            nactive += 1;
+        }
+    }
+    Ok(nactive)
+}
+
+/// Projected Gauss-Seidel on the dual (mj_solPGS), scalar constraints only.
+fn pgs(m: &Model, d: &mut Data, a: &mut Arena, maxiter: i32) -> Result<(), EngineError> {
+    let (ne, nf, nefc) = (d.raw.ne as usize, d.raw.nf as usize, d.raw.nefc as usize);
+    let nv = m.raw.nv as usize;
+    let arinv = a.alloc(nefc)?;
+    let oldstate = a.alloc_int(nefc)?;
+    for i in 0..nefc {
+        arinv[i] = 1.0 / d.efc_AR[i * (nefc + 1)];
+    }
+    dual_state(d)?;
+    let mut iter = 0;
+    while iter < maxiter {
+        let mut improvement = 0.0;
+        for i in 0..nefc {
+            let res = d.efc_b[i] + dot(&d.efc_AR[i * nefc..], d.efc_force, nefc);
+            let old = d.efc_force[i];
+            let f = &mut d.efc_force[i];
+            *f -= res * arinv[i];
+            if i >= ne && i < ne + nf {
+                let fl = d.efc_frictionloss[i];
+                if *f < -fl {
+                    *f = -fl;
+                } else if *f > fl {
+                    *f = fl;
+                }
+            } else if i >= ne + nf && *f < 0.0 {
+                *f = 0.0;
+            }
+            let athis = 1.0 / arinv[i];
+            let delta = *f - old;
+            let mut change = 0.5 * delta * delta * athis + delta * res;
+            if change > 1e-10 {
+                *f = old;
+                change = 0.0;
+            }
+            improvement -= change;
+        }
+        oldstate.copy_from_slice(&d.efc_state[..nefc]);
+        let nactive = dual_state(d)?;
+        let nchange = (0..nefc).filter(|&i| oldstate[i] != d.efc_state[i]).count() as i32;
+        improvement = rescale(m, improvement);
+        save_stats(d, &mut iter, improvement, 0.0, 0.0, nactive, nchange, 0, 0);
+        if improvement < m.raw.opt.tolerance {
+            break;
+        }
+    }
+    d.raw.solver_iter += iter;
+    d.raw.solver_nnz = (nefc * nefc) as i32;
+    mul_jac_t_vec(m, nefc, d.efc_J, d.qfrc_constraint, d.efc_force);
+    solve_ld(m, d.qacc, Some(d.qfrc_constraint), 1, d.qLD, d.qLDiagInv);
+    for i in 0..nv {
+        d.qacc[i] += d.qacc_smooth[i];
+    }
+    Ok(())
+}
+
+/// Working state of the CG and Newton solvers.
+struct Ctx<'b> {
+    jaref: &'b mut [f64],
+    jv: &'b mut [f64],
+    ma: &'b mut [f64],
+    mv: &'b mut [f64],
+    grad: &'b mut [f64],
+    mgrad: &'b mut [f64],
+    search: &'b mut [f64],
+    quad: &'b mut [f64],
+    newton: bool,
+    h: &'b mut [f64],
+    hdiag: &'b mut [f64],
+    hvec: &'b mut [f64],
+    cost: f64,
+    quad_gauss: [f64; 3],
+    nactive: i32,
+    ncone: i32,
+    nupdate: i32,
+    ls_iter: i32,
+    ls_slope: f64,
+}
+
+/// A line-search point: step, cost and its first two derivatives.
+#[derive(Clone, Copy, Default)]
+struct Pnt {
+    alpha: f64,
+    cost: f64,
+    deriv: [f64; 2],
+}
+
+/// Constraint update at the current Jaref, plus the Gauss cost.
+fn update_constraint(m: &Model, d: &mut Data, c: &mut Ctx) -> Result<(), EngineError> {
+    let nv = m.raw.nv as usize;
+    let nefc = d.raw.nefc as usize;
+    c.cost = constraint_update(m, d, c.jaref, true)?;
+    c.nactive = d.efc_state[..nefc]
+        .iter()
+        .filter(|&&s| s != SATISFIED)
+        .count() as i32;
+    c.ncone = d.efc_state[..nefc].iter().filter(|&&s| s == CONE).count() as i32;
+    let mut gauss = 0.0;
+    for i in 0..nv {
+        gauss += 0.5 * (c.ma[i] - d.qfrc_smooth[i]) * (d.qacc[i] - d.qacc_smooth[i]);
+    }
+    c.quad_gauss[0] = gauss;
+    c.cost += gauss;
+    Ok(())
+}
+
+/// grad and the preconditioned gradient (Hessian or mass-matrix solve).
+fn update_gradient(m: &Model, d: &mut Data, c: &mut Ctx) {
+    let nv = m.raw.nv as usize;
+    for i in 0..nv {
+        c.grad[i] = c.ma[i] - d.qfrc_smooth[i] - d.qfrc_constraint[i];
+    }
+    if c.newton {
+        chol_solve(c.mgrad, c.h, c.grad, nv);
+    } else {
+        solve_ld(m, c.mgrad, Some(c.grad), 1, d.qLD, d.qLDiagInv);
+    }
+}
+
+/// Quadratic pieces of the cost along the search direction.
+fn prepare(m: &Model, d: &Data, c: &mut Ctx) {
+    let nv = m.raw.nv as usize;
+    let nefc = d.raw.nefc as usize;
+    let v = &*c.search;
+    c.quad_gauss[1] = dot(v, c.ma, nv) - dot(v, d.qfrc_smooth, nv);
+    c.quad_gauss[2] = 0.5 * dot(v, c.mv, nv);
+    for i in 0..nefc {
+        let (jv, jaref, dd) = (c.jv[i], c.jaref[i], d.efc_D[i]);
+        let dj0 = dd * jaref;
+        let q = &mut c.quad[3 * i..3 * i + 3];
+        q[0] = jaref * dj0;
+        q[1] = jv * dj0;
+        q[2] = jv * dd * jv;
+        q[0] *= 0.5;
+        q[2] *= 0.5;
+    }
+}
+
+fn add_to3(a: &mut [f64; 3], b: &[f64]) {
+    a[0] += b[0];
+    a[1] += b[1];
+    a[2] += b[2];
+}
+
+/// Cost and derivatives at p.alpha along the search direction.
+fn eval(d: &Data, c: &mut Ctx, p: &mut Pnt) {
+    let (ne, nf, nefc) = (d.raw.ne as usize, d.raw.nf as usize, d.raw.nefc as usize);
+    let alpha = p.alpha;
+    let mut total = c.quad_gauss;
+    for i in 0..ne {
+        add_to3(&mut total, &c.quad[3 * i..]);
+    }
+    for i in ne..ne + nf {
+        let (start, dir) = (c.jaref[i], c.jv[i]);
+        let x = start + alpha * dir;
+        let f = d.efc_frictionloss[i];
+        let rf = d.efc_R[i] * f;
+        if -rf < x && x < rf {
+            add_to3(&mut total, &c.quad[3 * i..]);
+        } else if x <= -rf {
+            add_to3(&mut total, &[f * (-0.5 * rf - start), -f * dir, 0.0]);
+        } else {
+            add_to3(&mut total, &[f * (-0.5 * rf + start), f * dir, 0.0]);
+        }
+    }
+    for i in ne + nf..nefc {
+        let x = c.jaref[i] + alpha * c.jv[i];
+        if x < 0.0 {
+            add_to3(&mut total, &c.quad[3 * i..]);
+        }
+    }
+    let cost = 0.0 + (alpha * alpha * total[2] + alpha * total[1] + total[0]);
+    let d0 = 0.0 + (2.0 * alpha * total[2] + total[1]);
+    let mut d1 = 0.0 + 2.0 * total[2];
+    if d1 <= 0.0 {
+        crate::capi::errmem::warning("Linesearch objective is not convex");
+        d1 = MINVAL;
+    }
+    p.cost = cost;
+    p.deriv = [d0, d1];
+    c.ls_iter += 1;
+}
+
+/// Replaces p by a better candidate on the same side of the minimum; evaluates its Newton step.
+fn update_bracket(d: &Data, c: &mut Ctx, p: &mut Pnt, cand: &[Pnt; 3], next: &mut Pnt) -> bool {
+    let mut flag = false;
+    for q in cand {
+        if (p.deriv[0] < 0.0 && q.deriv[0] < 0.0 && p.deriv[0] < q.deriv[0])
+            || (p.deriv[0] > 0.0 && q.deriv[0] > 0.0 && p.deriv[0] > q.deriv[0])
+        {
+            *p = *q;
+            flag = true;
+        }
+    }
+    if flag {
+        next.alpha = p.alpha - p.deriv[0] / p.deriv[1];
+        eval(d, c, next);
+    }
+    flag
+}
+
+/// Exact line search along c.search (2.2.2's bracketed Newton search); returns the step.
+fn search(m: &Model, d: &mut Data, c: &mut Ctx) -> f64 {
+    const LS_MAXITER: i32 = 50;
+    const LS_TOLSCL: f64 = 0.01;
+    let nv = m.raw.nv as usize;
+    let nefc = d.raw.nefc as usize;
+    c.ls_iter = 0;
+    c.ls_slope = 1.0;
+    let snorm = norm(&c.search[..nv]);
+    if snorm < MINVAL {
+        return 0.0;
+    }
+    let scale = m.raw.stat.meaninertia * m.raw.nv.max(1) as f64;
+    let gtol =
+        m.raw.opt.tolerance * LS_TOLSCL * snorm * m.raw.stat.meaninertia * m.raw.nv.max(1) as f64;
+    let slopescl = 1.0 / (snorm * m.raw.stat.meaninertia * m.raw.nv.max(1) as f64);
+    let _ = scale;
+    mul_m(m, d.qM, c.mv, c.search);
+    mul_jac_vec(m, nefc, d.efc_J, c.jv, c.search);
+    prepare(m, d, c);
+    let d: &Data = d;
+
+    let mut p0 = Pnt::default();
+    eval(d, c, &mut p0);
+    let mut p1 = Pnt {
+        alpha: p0.alpha - p0.deriv[0] / p0.deriv[1],
+        ..Pnt::default()
+    };
+    eval(d, c, &mut p1);
+    if p0.cost < p1.cost {
+        p1 = p0;
+    }
+    if p1.deriv[0].abs() < gtol {
+        c.ls_slope = p1.deriv[0].abs() * slopescl;
+        return p1.alpha;
+    }
+    let dir = if p1.deriv[0] < 0.0 { 1.0 } else { -1.0 };
+    let mut p2 = Pnt::default();
+    let mut p2update = false;
+    while p1.deriv[0] * dir <= -gtol && c.ls_iter < LS_MAXITER {
+        p2 = p1;
+        p2update = true;
+        p1.alpha -= p1.deriv[0] / p1.deriv[1];
+        eval(d, c, &mut p1);
+        if p1.deriv[0].abs() < gtol {
+            c.ls_slope = p1.deriv[0].abs() * slopescl;
+            return p1.alpha;
+        }
+    }
+    if c.ls_iter >= LS_MAXITER || !p2update {
+        c.ls_slope = p1.deriv[0].abs() * slopescl;
+        return p1.alpha;
+    }
+    let mut p2next = p1;
+    let mut p1next = Pnt {
+        alpha: p1.alpha - p1.deriv[0] / p1.deriv[1],
+        ..Pnt::default()
+    };
+    eval(d, c, &mut p1next);
+    while c.ls_iter < LS_MAXITER {
+        let mut pmid = Pnt {
+            alpha: 0.5 * (p1.alpha + p2.alpha),
+            ..Pnt::default()
+        };
+        eval(d, c, &mut pmid);
+        let cand = [p1next, p2next, pmid];
+        let mut best: Option<usize> = None;
+        let mut bestcost = 0.0;
+        for (i, q) in cand.iter().enumerate() {
+            if q.deriv[0].abs() < gtol && (best.is_none() || q.cost < bestcost) {
+                bestcost = q.cost;
+                best = Some(i);
+            }
+        }
+        if let Some(b) = best {
+            c.ls_slope = cand[b].deriv[0].abs() * slopescl;
+            return cand[b].alpha;
+        }
+        let b1 = update_bracket(d, c, &mut p1, &cand, &mut p1next);
+        let b2 = update_bracket(d, c, &mut p2, &cand, &mut p2next);
+        if !b1 && !b2 {
+            c.ls_slope = pmid.deriv[0].abs() * slopescl;
+            return pmid.alpha;
+        }
+    }
+    if p1.cost <= p2.cost && p1.cost < p0.cost {
+        c.ls_slope = p1.deriv[0].abs() * slopescl;
+        p1.alpha
+    } else if p2.cost <= p1.cost && p2.cost < p0.cost {
+        c.ls_slope = p2.deriv[0].abs() * slopescl;
+        p2.alpha
+    } else {
+        0.0
+    }
+}
+
+/// H = M + J'*D*J over quadratic rows, Cholesky-factorized (dense).
+fn hessian_direct(m: &Model, d: &mut Data, c: &mut Ctx) {
+    let nv = m.raw.nv as usize;
+    let nefc = d.raw.nefc as usize;
+    for i in 0..nefc {
+        c.hdiag[i] = if d.efc_state[i] == QUADRATIC {
+            d.efc_D[i]
+        } else {
+            0.0
+        };
+    }
+    sqr_mat_td(c.h, d.efc_J, Some(c.hdiag), nefc, nv);
+    add_m_dense(m, d.qM, c.h);
+    chol_factor(c.h, nv, MINVAL);
+    c.nupdate = nefc as i32;
+}
+
+/// Rank-one updates of the factor for rows whose quadratic state changed.
+fn hessian_incremental(m: &Model, d: &mut Data, c: &mut Ctx, oldstate: &[i32]) {
+    let nv = m.raw.nv as usize;
+    let nefc = d.raw.nefc as usize;
+    c.nupdate = 0;
+    for i in 0..nefc {
+        let (was, is) = (oldstate[i] == QUADRATIC, d.efc_state[i] == QUADRATIC);
+        if was == is {
+            continue;
+        }
+        let s = d.efc_D[i].sqrt();
+        for k in 0..nv {
+            c.hvec[k] = d.efc_J[i * nv + k] * s;
+        }
+        let rank = chol_update(c.h, c.hvec, nv, is);
+        c.nupdate += 1;
+        if rank < nv {
+            hessian_direct(m, d, c);
+            return;
+        }
+    }
+}
+
+/// Primal solver: Newton (Hessian-preconditioned) or Polak-Ribiere CG (mj_solCGNewton).
+fn cg_newton(
+    m: &Model,
+    d: &mut Data,
+    a: &mut Arena,
+    maxiter: i32,
+    newton: bool,
+) -> Result<(), EngineError> {
+    let nv = m.raw.nv as usize;
+    let nefc = d.raw.nefc as usize;
+    let hn = if newton { nv * nv } else { 0 };
+    let mut c = Ctx {
+        jaref: a.alloc(nefc)?,
+        jv: a.alloc(nefc)?,
+        ma: a.alloc(nv)?,
+        mv: a.alloc(nv)?,
+        grad: a.alloc(nv)?,
+        mgrad: a.alloc(nv)?,
+        search: a.alloc(nv)?,
+        quad: a.alloc(3 * nefc)?,
+        newton,
+        h: a.alloc(hn)?,
+        hdiag: a.alloc(if newton { nefc } else { 0 })?,
+        hvec: a.alloc(if newton { nv } else { 0 })?,
+        cost: 0.0,
+        quad_gauss: [0.0; 3],
+        nactive: 0,
+        ncone: 0,
+        nupdate: 0,
+        ls_iter: 0,
+        ls_slope: 1.0,
+    };
+    let gradold = a.alloc(nv)?;
+    let mgradold = a.alloc(nv)?;
+    let oldstate = a.alloc_int(nefc)?;
+
+    mul_m(m, d.qM, c.ma, d.qacc);
+    mul_jac_vec(m, nefc, d.efc_J, c.jaref, d.qacc);
+    for i in 0..nefc {
+        c.jaref[i] -= d.efc_aref[i];
+    }
+    update_constraint(m, d, &mut c)?;
+    if newton {
+        hessian_direct(m, d, &mut c);
+    }
+    update_gradient(m, d, &mut c);
+    for i in 0..nv {
+        c.search[i] = -c.mgrad[i];
+    }
+
+    let mut iter = 0;
+    while iter < maxiter {
+        let alpha = search(m, d, &mut c);
+        if alpha == 0.0 {
+            break;
+        }
+        for i in 0..nv {
+            d.qacc[i] += c.search[i] * alpha;
+            c.ma[i] += c.mv[i] * alpha;
+        }
+        for i in 0..nefc {
+            c.jaref[i] += c.jv[i] * alpha;
+        }
+        if !newton {
+            gradold.copy_from_slice(c.grad);
+            mgradold.copy_from_slice(c.mgrad);
+        }
+        oldstate.copy_from_slice(&d.efc_state[..nefc]);
+        let oldcost = c.cost;
+        update_constraint(m, d, &mut c)?;
+        if newton {
+            hessian_incremental(m, d, &mut c, oldstate);
+        }
+        update_gradient(m, d, &mut c);
+        let nchange = (0..nefc).filter(|&i| d.efc_state[i] != oldstate[i]).count() as i32;
+        let improvement = rescale(m, oldcost - c.cost);
+        let gradient = rescale(m, norm(&c.grad[..nv]));
+        let (slope, nactive, neval, nupdate) = (c.ls_slope, c.nactive, c.ls_iter, c.nupdate);
+        save_stats(
+            d,
+            &mut iter,
+            improvement,
+            gradient,
+            slope,
+            nactive,
+            nchange,
+            neval,
+            nupdate,
+        );
+        if improvement < m.raw.opt.tolerance || gradient < m.raw.opt.tolerance {
+            break;
+        }
+        if newton {
+            for i in 0..nv {
+                c.search[i] = -c.mgrad[i];
+            }
+        } else {
+            // Polak-Ribiere; the denominator uses the old Mgrad before it is overwritten
+            let den = crate::math::misc::max(MINVAL, dot(gradold, mgradold, nv));
+            for i in 0..nv {
+                mgradold[i] = c.mgrad[i] - mgradold[i];
+            }
+            let mut beta = dot(c.grad, mgradold, nv) / den;
+            if beta < 0.0 {
+                beta = 0.0;
+            }
+            for i in 0..nv {
+                c.search[i] = -c.mgrad[i] + beta * c.search[i];
+            }
+        }
+    }
+    d.raw.solver_iter += iter;
+    d.raw.solver_nnz = if newton { (nv * nv) as i32 } else { 0 };
+    Ok(())
+}
