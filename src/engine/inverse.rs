@@ -2,7 +2,7 @@
 //! (mj_inverse), and the comparison of forward and inverse results (mj_compareFwdInv).
 
 use super::collision::collision;
-use super::constraint::make_constraint;
+use super::constraint::{constraint_update, make_constraint, mul_jac_vec, with_arena};
 use super::forward::{fwd_velocity, tendon, xfrc_accumulate};
 use super::inertia::{crb, factor_m};
 use super::kinematics::{camlight, com_pos, kinematics};
@@ -11,7 +11,7 @@ use super::rne::rne_with;
 use super::sensor::{sensor_acc, sensor_pos, sensor_vel};
 use super::support::{energy_pos, energy_vel};
 use super::transmission::transmission;
-use super::{enabled, not_implemented, tick, Data, EngineError, Model};
+use super::{enabled, tick, Data, EngineError, Model};
 use crate::abi::*;
 use mjtTimer_::*;
 
@@ -40,15 +40,24 @@ pub fn inv_velocity(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     fwd_velocity(m, d)
 }
 
-/// Constraint forces that produce qacc (mj_invConstraint); zero without constraints.
+/// Constraint forces that produce qacc (mj_invConstraint): the constraint update at
+/// jar = J*qacc - aref; zero without constraints.
 pub fn inv_constraint(m: &Model, d: &mut Data) -> Result<(), EngineError> {
-    let _ = m;
-    if d.raw.nefc != 0 {
-        return Err(not_implemented(
-            "inverse constraint forces (mj_invConstraint with active constraints) are",
-        ));
+    let nefc = d.raw.nefc.max(0) as usize;
+    if nefc == 0 {
+        d.qfrc_constraint.fill(0.0);
+        tick(d, mjTIMER_CONSTRAINT);
+        return Ok(());
     }
-    d.qfrc_constraint.fill(0.0);
+    with_arena(d, |d, a| -> Result<(), EngineError> {
+        let jar = a.alloc(nefc)?;
+        mul_jac_vec(m, nefc, d.efc_J, jar, d.qacc);
+        for i in 0..nefc {
+            jar[i] -= d.efc_aref[i];
+        }
+        constraint_update(m, d, jar, false)?;
+        Ok(())
+    })?;
     tick(d, mjTIMER_CONSTRAINT);
     Ok(())
 }

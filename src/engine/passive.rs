@@ -1,8 +1,6 @@
 //! Passive forces: joint springs (quaternion springs for ball and free joints), dof dampers.
 
-use super::{
-    disabled, Data, EngineError, Model, JNT_BALL, JNT_FREE, JNT_HINGE, JNT_SLIDE,
-};
+use super::{disabled, Data, EngineError, Model, JNT_BALL, JNT_FREE, JNT_HINGE, JNT_SLIDE};
 use crate::abi::mjtDisableBit_;
 use crate::math::blas::add_to_scl;
 use crate::math::*;
