@@ -119,6 +119,8 @@ inline void check_step(const mjModel* m, mjData* d, const Inputs& in, Writer& w)
     w.d("qacc#" + i, d->qacc, m->nv);
     w.d("qacc_warmstart#" + i, d->qacc_warmstart, m->nv);
     w.d("sensordata#" + i, d->sensordata, m->nsensordata);
+    w.d("solver_fwdinv#" + i, d->solver_fwdinv, 2);  // mjENBL_FWDINV
+    w.d("energy#" + i, d->energy, 2);
   }
 }
 
