@@ -328,6 +328,24 @@ inline void check_objects(const mjModel* m, mjData* d, const Inputs& in, Writer&
   }
 }
 
+// The sensor stages at the reference's forward results, contacts included (touch sensors,
+// cfrc_ext of contacts): mj_sensorPos, mj_sensorVel, mj_sensorAcc, each recorded.
+inline void check_sensors(const mjModel* m, mjData* d, const Inputs& in, Writer& w) {
+  for (int k = 0; k < in.nstate; k++) {
+    at_state(m, d, in, k, true);
+    load_contacts(d, *in.post, I(k));
+    mju_zero(d->sensordata, m->nsensordata);
+    std::string i = I(k);
+    mj_sensorPos(m, d);
+    w.d("pos.sensordata#" + i, d->sensordata, m->nsensordata);
+    mj_sensorVel(m, d);
+    w.d("vel.sensordata#" + i, d->sensordata, m->nsensordata);
+    mj_sensorAcc(m, d);
+    w.d("acc.sensordata#" + i, d->sensordata, m->nsensordata);
+    w.d("cfrc_ext#" + i, d->cfrc_ext, 6 * m->nbody);
+  }
+}
+
 // Check groups that call nothing but the functions under test on the model (no mjData).
 inline bool needs_data(const std::string& group) {
   return group != "names" && group != "integratePos" && group != "differentiatePos";
@@ -354,6 +372,7 @@ inline std::vector<std::pair<std::string, Check>> state_checks() {
       {"names", check_names},
       {"inverse", check_inverse},
       {"objects", check_objects},
+      {"sensors", check_sensors},
   };
 }
 

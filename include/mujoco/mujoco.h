@@ -227,6 +227,13 @@ void mj_invConstraint(const mjModel *m, mjData *d);
 
 void mj_compareFwdInv(const mjModel *m, mjData *d);
 
+mjtNum mju_rayGeom(const mjtNum *pos,
+                   const mjtNum *mat,
+                   const mjtNum *size,
+                   const mjtNum *pnt,
+                   const mjtNum *vec,
+                   int geomtype);
+
 void mju_error(const char *msg);
 
 void mju_warning(const char *msg);
@@ -354,13 +361,6 @@ mjtNum mj_rayMesh(const mjModel *m,
                   int geomid,
                   const mjtNum *pnt,
                   const mjtNum *vec);
-
-mjtNum mju_rayGeom(const mjtNum *pos,
-                   const mjtNum *mat,
-                   const mjtNum *size,
-                   const mjtNum *pnt,
-                   const mjtNum *vec,
-                   int geomtype);
 
 mjtNum mju_raySkin(int nface,
                    int nvert,

@@ -1009,3 +1009,25 @@ pub unsafe extern "C" fn mj_compareFwdInv(m: *const mjModel, d: *mut mjData) {
         engine::inverse::compare_fwd_inv,
     )
 }
+
+#[no_mangle]
+pub unsafe extern "C" fn mju_rayGeom(
+    pos: *const mjtNum,
+    mat: *const mjtNum,
+    size: *const mjtNum,
+    pnt: *const mjtNum,
+    vec: *const mjtNum,
+    geomtype: c_int,
+) -> mjtNum {
+    guard("mju_rayGeom", -1.0, || {
+        let m: [f64; 9] = crate::math::arr(slice(mat, 9));
+        engine::ray::ray_geom(
+            &arr3(pos),
+            &m,
+            slice(size, 3),
+            &arr3(pnt),
+            &arr3(vec),
+            geomtype,
+        )
+    })
+}

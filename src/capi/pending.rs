@@ -108,12 +108,6 @@ pub unsafe extern "C" fn mj_rayMesh(m: *const mjModel, d: *const mjData, geomid:
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mju_rayGeom(pos: *const mjtNum, mat: *const mjtNum, size: *const mjtNum, pnt: *const mjtNum, vec: *const mjtNum, geomtype: c_int) -> mjtNum {
-    pending("mju_rayGeom");
-    0.0
-}
-
-#[no_mangle]
 pub unsafe extern "C" fn mju_raySkin(nface: c_int, nvert: c_int, face: *const c_int, vert: *const f32, pnt: *const mjtNum, vec: *const mjtNum, vertid: *mut c_int) -> mjtNum {
     pending("mju_raySkin");
     0.0
