@@ -234,6 +234,15 @@ mjtNum mju_rayGeom(const mjtNum *pos,
                    const mjtNum *vec,
                    int geomtype);
 
+mjtNum mj_ray(const mjModel *m,
+              const mjData *d,
+              const mjtNum *pnt,
+              const mjtNum *vec,
+              const mjtByte *geomgroup,
+              mjtByte flg_static,
+              int bodyexclude,
+              int *geomid);
+
 void mju_error(const char *msg);
 
 void mju_warning(const char *msg);
@@ -340,15 +349,6 @@ int mj_isDual(const mjModel *m);
 void mj_mulJacVec(const mjModel *m, mjData *d, mjtNum *res, const mjtNum *vec);
 
 void mj_mulJacTVec(const mjModel *m, mjData *d, mjtNum *res, const mjtNum *vec);
-
-mjtNum mj_ray(const mjModel *m,
-              const mjData *d,
-              const mjtNum *pnt,
-              const mjtNum *vec,
-              const mjtByte *geomgroup,
-              mjtByte flg_static,
-              int bodyexclude,
-              int *geomid);
 
 mjtNum mj_rayHfield(const mjModel *m,
                     const mjData *d,

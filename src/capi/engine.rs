@@ -1031,3 +1031,25 @@ pub unsafe extern "C" fn mju_rayGeom(
         )
     })
 }
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_ray(
+    m: *const mjModel,
+    d: *const mjData,
+    pnt: *const mjtNum,
+    vec: *const mjtNum,
+    geomgroup: *const mjtByte,
+    flg_static: mjtByte,
+    bodyexclude: c_int,
+    geomid: *mut c_int,
+) -> mjtNum {
+    let (p, v) = (arr3(pnt), arr3(vec));
+    let groups = (!geomgroup.is_null()).then(|| std::slice::from_raw_parts(geomgroup, 6));
+    run_const("mj_ray", -1.0, m, d, |mv, dv| {
+        let (dist, id) = engine::ray::ray(mv, dv, &p, &v, groups, flg_static != 0, bodyexclude)?;
+        if !geomid.is_null() {
+            *geomid = id;
+        }
+        Ok(dist)
+    })
+}

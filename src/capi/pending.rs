@@ -90,12 +90,6 @@ pub unsafe extern "C" fn mj_mulJacTVec(m: *const mjModel, d: *mut mjData, res: *
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_ray(m: *const mjModel, d: *const mjData, pnt: *const mjtNum, vec: *const mjtNum, geomgroup: *const mjtByte, flg_static: mjtByte, bodyexclude: c_int, geomid: *mut c_int) -> mjtNum {
-    pending("mj_ray");
-    0.0
-}
-
-#[no_mangle]
 pub unsafe extern "C" fn mj_rayHfield(m: *const mjModel, d: *const mjData, geomid: c_int, pnt: *const mjtNum, vec: *const mjtNum) -> mjtNum {
     pending("mj_rayHfield");
     0.0

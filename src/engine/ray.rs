@@ -1,9 +1,13 @@
-//! Ray intersections with primitive geoms (mju_rayGeom): distance along the ray direction to
-//! the nearest surface point, or -1 when the ray misses.
+//! Ray casting (mj_ray, mju_rayGeom): distance along the ray direction to the nearest surface
+//! point, or -1 when the ray misses. Meshes and height fields are not supported yet.
 
-use super::{EngineError, MINVAL};
+use super::linalg::row;
+use super::{not_implemented, Data, EngineError, Model, MINVAL};
 use crate::abi::mjtGeom_::*;
-use crate::math::{Mat3, Vec3};
+use crate::math::{norm3, Mat3, Vec3};
+
+/// Number of geom groups (mjNGROUP).
+const NGROUP: i32 = 6;
 
 /// Ray point and direction in the geom frame.
 fn to_local(pos: &Vec3, mat: &Mat3, pnt: &Vec3, vec: &Vec3) -> (Vec3, Vec3) {
@@ -217,4 +221,71 @@ pub fn ray_geom(
             "mju_rayGeom: unexpected geom type {geomtype}"
         )));
     })
+}
+
+/// Is geom `g` left out of ray casting: the excluded body, invisible (alpha 0, own or
+/// material), static when static geoms are off, or a hidden group (planes and height fields
+/// ignore groups)?
+fn eliminated(m: &Model, g: usize, groups: Option<&[u8]>, with_static: bool, exclude: i32) -> bool {
+    let body = m.geom_bodyid()[g];
+    if body == exclude {
+        return true;
+    }
+    let mat = m.geom_matid()[g];
+    if mat < 0 && m.geom_rgba()[4 * g + 3] == 0.0 {
+        return true;
+    }
+    if mat >= 0 && m.mat_rgba()[4 * mat as usize + 3] == 0.0 {
+        return true;
+    }
+    if !with_static && body == 0 {
+        return true;
+    }
+    let ty = m.geom_type()[g];
+    if ty == mjGEOM_PLANE as i32 || ty == mjGEOM_HFIELD as i32 {
+        return false;
+    }
+    match groups {
+        None => false,
+        Some(gr) => gr[m.geom_group()[g].clamp(0, NGROUP - 1) as usize] == 0,
+    }
+}
+
+/// Nearest geom hit by the ray from `pnt` along `vec`: (distance, geom id), or (-1, -1)
+/// (mj_ray). Meshes and height fields are not supported yet.
+pub fn ray(
+    m: &Model,
+    d: &Data,
+    pnt: &Vec3,
+    vec: &Vec3,
+    groups: Option<&[u8]>,
+    with_static: bool,
+    exclude: i32,
+) -> Result<(f64, i32), EngineError> {
+    if norm3(vec) < MINVAL {
+        return Err(EngineError("mj_ray: vector length is too small".into()));
+    }
+    let (mut dist, mut id) = (-1.0, -1);
+    for g in 0..m.raw.ngeom as usize {
+        if eliminated(m, g, groups, with_static, exclude) {
+            continue;
+        }
+        let ty = m.geom_type()[g];
+        if ty == mjGEOM_MESH as i32 || ty == mjGEOM_HFIELD as i32 {
+            return Err(not_implemented("rays against meshes and height fields are"));
+        }
+        let x = ray_geom(
+            &row(d.geom_xpos, g),
+            &row(d.geom_xmat, g),
+            &m.geom_size()[3 * g..3 * g + 3],
+            pnt,
+            vec,
+            ty,
+        )?;
+        if x >= 0.0 && (x < dist || dist < 0.0) {
+            dist = x;
+            id = g as i32;
+        }
+    }
+    Ok((dist, id))
 }

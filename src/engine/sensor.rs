@@ -3,11 +3,11 @@
 //! only when a sensor of the stage needs them.
 
 use super::linalg::{clip, min, mul_mat_t_vec, row};
-use super::ray::ray_geom;
+use super::ray::{ray, ray_geom};
 use super::rne::rne_post_constraint;
 use super::support::{contact_force, object_acceleration, object_frame, object_velocity};
 use super::velocity::subtree_vel;
-use super::{disabled, enabled, not_implemented, Data, EngineError, Model};
+use super::{disabled, enabled, Data, EngineError, Model};
 use crate::abi::*;
 use crate::math::*;
 use mjtSensor_::*;
@@ -102,7 +102,19 @@ pub fn sensor_pos(m: &Model, d: &mut Data) -> Result<(), EngineError> {
             let mat = row::<9>(d.site_xmat, id);
             mul_mat_t_vec(&mut d.sensordata[adr..], &mat, &m.raw.opt.magnetic, 3, 3);
         } else if is(ty, mjSENS_RANGEFINDER) {
-            return Err(not_implemented("rangefinder sensors (mj_ray) are"));
+            // distance along the site's z axis to the nearest geom, its own body excluded
+            let mat = row::<9>(d.site_xmat, id);
+            let dir = [mat[2], mat[5], mat[8]];
+            let (dist, _) = ray(
+                m,
+                d,
+                &row(d.site_xpos, id),
+                &dir,
+                None,
+                true,
+                m.site_bodyid()[id],
+            )?;
+            d.sensordata[adr] = dist;
         } else if is(ty, mjSENS_JOINTPOS) {
             d.sensordata[adr] = d.qpos[m.jnt_qposadr()[id] as usize];
         } else if is(ty, mjSENS_TENDONPOS) {
