@@ -119,6 +119,8 @@ inline void check_step(const mjModel* m, mjData* d, const Inputs& in, Writer& w)
     w.d("qacc#" + i, d->qacc, m->nv);
     w.d("qacc_warmstart#" + i, d->qacc_warmstart, m->nv);
     w.d("sensordata#" + i, d->sensordata, m->nsensordata);
+    w.d("solver_fwdinv#" + i, d->solver_fwdinv, 2);  // mjENBL_FWDINV
+    w.d("energy#" + i, d->energy, 2);
   }
 }
 
@@ -278,14 +280,31 @@ inline void check_inverse(const mjModel* m, mjData* d, const Inputs& in, Writer&
   }
 }
 
-// Post-solve quantities at the reference's forward results: mj_subtreeVel,
-// mj_rnePostConstraint, and mj_objectVelocity / mj_objectAcceleration of every object with a
-// frame, global and local.
+// The reference's contacts at state k (dump_contacts), which load_data leaves out.
+inline void load_contacts(mjData* d, const Reader& r, const std::string& inst) {
+  const size_t nreal = offsetof(mjContact, dim) / sizeof(mjtNum);
+  for (int c = 0; c < d->ncon; c++) {
+    mjContact* con = d->contact + c;
+    std::string ci = inst + "." + std::to_string(c);
+    r.copy("contact.real#" + ci, &con->dist, nreal * sizeof(mjtNum));
+    r.copy("contact.int#" + ci, &con->dim, 5 * sizeof(int));
+  }
+}
+
+// Post-solve quantities at the reference's forward results, contacts included:
+// mj_contactForce, mj_subtreeVel, mj_rnePostConstraint, and mj_objectVelocity /
+// mj_objectAcceleration of every object with a frame, global and local.
 inline void check_objects(const mjModel* m, mjData* d, const Inputs& in, Writer& w) {
   const int types[][2] = {{mjOBJ_BODY, m->nbody}, {mjOBJ_XBODY, m->nbody}, {mjOBJ_GEOM, m->ngeom},
                           {mjOBJ_SITE, m->nsite}, {mjOBJ_CAMERA, m->ncam}};
   for (int k = 0; k < in.nstate; k++) {
     at_state(m, d, in, k, true);
+    load_contacts(d, *in.post, I(k));
+    for (int c = 0; c < d->ncon; c++) {
+      mjtNum f[6];
+      mj_contactForce(m, d, c, f);
+      w.d("contactForce#" + I(k, c), f, 6);
+    }
     mj_subtreeVel(m, d);
     mj_rnePostConstraint(m, d);
     std::string i = I(k);
@@ -306,6 +325,24 @@ inline void check_objects(const mjModel* m, mjData* d, const Inputs& in, Writer&
         }
       }
     }
+  }
+}
+
+// The sensor stages at the reference's forward results, contacts included (touch sensors,
+// cfrc_ext of contacts): mj_sensorPos, mj_sensorVel, mj_sensorAcc, each recorded.
+inline void check_sensors(const mjModel* m, mjData* d, const Inputs& in, Writer& w) {
+  for (int k = 0; k < in.nstate; k++) {
+    at_state(m, d, in, k, true);
+    load_contacts(d, *in.post, I(k));
+    mju_zero(d->sensordata, m->nsensordata);
+    std::string i = I(k);
+    mj_sensorPos(m, d);
+    w.d("pos.sensordata#" + i, d->sensordata, m->nsensordata);
+    mj_sensorVel(m, d);
+    w.d("vel.sensordata#" + i, d->sensordata, m->nsensordata);
+    mj_sensorAcc(m, d);
+    w.d("acc.sensordata#" + i, d->sensordata, m->nsensordata);
+    w.d("cfrc_ext#" + i, d->cfrc_ext, 6 * m->nbody);
   }
 }
 
@@ -335,6 +372,7 @@ inline std::vector<std::pair<std::string, Check>> state_checks() {
       {"names", check_names},
       {"inverse", check_inverse},
       {"objects", check_objects},
+      {"sensors", check_sensors},
   };
 }
 

@@ -240,7 +240,23 @@ int mj_isDual(const mjModel *m);
 
 void mj_mulJacVec(const mjModel *m, mjData *d, mjtNum *res, const mjtNum *vec);
 
+mjtNum mju_rayGeom(const mjtNum *pos,
+                   const mjtNum *mat,
+                   const mjtNum *size,
+                   const mjtNum *pnt,
+                   const mjtNum *vec,
+                   int geomtype);
+
 void mj_mulJacTVec(const mjModel *m, mjData *d, mjtNum *res, const mjtNum *vec);
+
+mjtNum mj_ray(const mjModel *m,
+              const mjData *d,
+              const mjtNum *pnt,
+              const mjtNum *vec,
+              const mjtByte *geomgroup,
+              mjtByte flg_static,
+              int bodyexclude,
+              int *geomid);
 
 void mju_error(const char *msg);
 
@@ -325,15 +341,6 @@ int mj_setLengthRange(mjModel *m,
                       char *error,
                       int error_sz);
 
-mjtNum mj_ray(const mjModel *m,
-              const mjData *d,
-              const mjtNum *pnt,
-              const mjtNum *vec,
-              const mjtByte *geomgroup,
-              mjtByte flg_static,
-              int bodyexclude,
-              int *geomid);
-
 mjtNum mj_rayHfield(const mjModel *m,
                     const mjData *d,
                     int geomid,
@@ -345,13 +352,6 @@ mjtNum mj_rayMesh(const mjModel *m,
                   int geomid,
                   const mjtNum *pnt,
                   const mjtNum *vec);
-
-mjtNum mju_rayGeom(const mjtNum *pos,
-                   const mjtNum *mat,
-                   const mjtNum *size,
-                   const mjtNum *pnt,
-                   const mjtNum *vec,
-                   int geomtype);
 
 mjtNum mju_raySkin(int nface,
                    int nvert,

@@ -1270,6 +1270,28 @@ pub unsafe extern "C" fn mj_mulJacVec(
 }
 
 #[no_mangle]
+pub unsafe extern "C" fn mju_rayGeom(
+    pos: *const mjtNum,
+    mat: *const mjtNum,
+    size: *const mjtNum,
+    pnt: *const mjtNum,
+    vec: *const mjtNum,
+    geomtype: c_int,
+) -> mjtNum {
+    guard("mju_rayGeom", -1.0, || {
+        let m: [f64; 9] = crate::math::arr(slice(mat, 9));
+        engine::ray::ray_geom(
+            &arr3(pos),
+            &m,
+            slice(size, 3),
+            &arr3(pnt),
+            &arr3(vec),
+            geomtype,
+        )
+    })
+}
+
+#[no_mangle]
 pub unsafe extern "C" fn mj_mulJacTVec(
     m: *const mjModel,
     d: *mut mjData,
@@ -1284,5 +1306,27 @@ pub unsafe extern "C" fn mj_mulJacTVec(
     let nv = (*m).nv as usize;
     run("mj_mulJacTVec", (), m, d, |m, d| {
         constraint::mul_jac_t_vec(m, d, slice_mut(res, nv), &v)
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_ray(
+    m: *const mjModel,
+    d: *const mjData,
+    pnt: *const mjtNum,
+    vec: *const mjtNum,
+    geomgroup: *const mjtByte,
+    flg_static: mjtByte,
+    bodyexclude: c_int,
+    geomid: *mut c_int,
+) -> mjtNum {
+    let (p, v) = (arr3(pnt), arr3(vec));
+    let groups = (!geomgroup.is_null()).then(|| std::slice::from_raw_parts(geomgroup, 6));
+    run_const("mj_ray", -1.0, m, d, |mv, dv| {
+        let (dist, id) = engine::ray::ray(mv, dv, &p, &v, groups, flg_static != 0, bodyexclude)?;
+        if !geomid.is_null() {
+            *geomid = id;
+        }
+        Ok(dist)
     })
 }

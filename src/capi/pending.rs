@@ -36,12 +36,6 @@ pub unsafe extern "C" fn mj_setLengthRange(m: *mut mjModel, d: *mut mjData, inde
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_ray(m: *const mjModel, d: *const mjData, pnt: *const mjtNum, vec: *const mjtNum, geomgroup: *const mjtByte, flg_static: mjtByte, bodyexclude: c_int, geomid: *mut c_int) -> mjtNum {
-    pending("mj_ray");
-    0.0
-}
-
-#[no_mangle]
 pub unsafe extern "C" fn mj_rayHfield(m: *const mjModel, d: *const mjData, geomid: c_int, pnt: *const mjtNum, vec: *const mjtNum) -> mjtNum {
     pending("mj_rayHfield");
     0.0
@@ -50,12 +44,6 @@ pub unsafe extern "C" fn mj_rayHfield(m: *const mjModel, d: *const mjData, geomi
 #[no_mangle]
 pub unsafe extern "C" fn mj_rayMesh(m: *const mjModel, d: *const mjData, geomid: c_int, pnt: *const mjtNum, vec: *const mjtNum) -> mjtNum {
     pending("mj_rayMesh");
-    0.0
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mju_rayGeom(pos: *const mjtNum, mat: *const mjtNum, size: *const mjtNum, pnt: *const mjtNum, vec: *const mjtNum, geomtype: c_int) -> mjtNum {
-    pending("mju_rayGeom");
     0.0
 }
 

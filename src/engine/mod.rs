@@ -17,6 +17,7 @@ pub mod kinematics;
 pub mod linalg;
 pub mod passive;
 pub mod print;
+pub mod ray;
 pub mod rne;
 pub mod sensor;
 pub mod setconst;

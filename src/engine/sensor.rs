@@ -3,10 +3,11 @@
 //! only when a sensor of the stage needs them.
 
 use super::linalg::{clip, min, mul_mat_t_vec, row};
+use super::ray::{ray, ray_geom};
 use super::rne::rne_post_constraint;
 use super::support::{contact_force, object_acceleration, object_frame, object_velocity};
 use super::velocity::subtree_vel;
-use super::{disabled, enabled, not_implemented, Data, EngineError, Model};
+use super::{disabled, enabled, Data, EngineError, Model};
 use crate::abi::*;
 use crate::math::*;
 use mjtSensor_::*;
@@ -101,7 +102,19 @@ pub fn sensor_pos(m: &Model, d: &mut Data) -> Result<(), EngineError> {
             let mat = row::<9>(d.site_xmat, id);
             mul_mat_t_vec(&mut d.sensordata[adr..], &mat, &m.raw.opt.magnetic, 3, 3);
         } else if is(ty, mjSENS_RANGEFINDER) {
-            return Err(not_implemented("rangefinder sensors (mj_ray) are"));
+            // distance along the site's z axis to the nearest geom, its own body excluded
+            let mat = row::<9>(d.site_xmat, id);
+            let dir = [mat[2], mat[5], mat[8]];
+            let (dist, _) = ray(
+                m,
+                d,
+                &row(d.site_xpos, id),
+                &dir,
+                None,
+                true,
+                m.site_bodyid()[id],
+            )?;
+            d.sensordata[adr] = dist;
         } else if is(ty, mjSENS_JOINTPOS) {
             d.sensordata[adr] = d.qpos[m.jnt_qposadr()[id] as usize];
         } else if is(ty, mjSENS_TENDONPOS) {
@@ -252,23 +265,39 @@ pub fn sensor_vel(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     finish_stage(m, d, VEL)
 }
 
-/// Normal force on the touch sensor `site` from contacts of its body (mjSENS_TOUCH).
+/// Sum of the normal forces of the contacts of the site's body whose normal ray, cast from the
+/// contact point, hits the site's zone (mjSENS_TOUCH).
 fn touch(m: &Model, d: &Data, site: usize) -> Result<f64, EngineError> {
     let body = m.site_bodyid()[site];
+    let mut total = 0.0;
     for j in 0..d.raw.ncon.max(0) as usize {
         let con = &d.contact[j];
         let b1 = m.geom_bodyid()[con.geom1 as usize];
         let b2 = m.geom_bodyid()[con.geom2 as usize];
-        if con.efc_address >= 0
-            && (body == b1 || body == b2)
-            && contact_force(m, d, j as i32)[0] > 0.0
-        {
-            return Err(not_implemented(
-                "touch sensors with active contacts (mju_rayGeom) are",
-            ));
+        if con.efc_address < 0 || (body != b1 && body != b2) {
+            continue;
+        }
+        let normal = contact_force(m, d, j as i32)[0];
+        if normal <= 0.0 {
+            continue;
+        }
+        let (mut ray, _) = normalize3(&scl3(&v3(&con.frame[..3]), normal));
+        if body == b2 {
+            ray = scl3(&ray, -1.0);
+        }
+        let hit = ray_geom(
+            &row(d.site_xpos, site),
+            &row(d.site_xmat, site),
+            &m.site_size()[3 * site..3 * site + 3],
+            &con.pos,
+            &ray,
+            m.site_type()[site],
+        )?;
+        if hit >= 0.0 {
+            total += normal;
         }
     }
-    Ok(0.0)
+    Ok(total)
 }
 
 /// Acceleration- and force-dependent sensors (mj_sensorAcc).

@@ -1,0 +1,291 @@
+//! Ray casting (mj_ray, mju_rayGeom): distance along the ray direction to the nearest surface
+//! point, or -1 when the ray misses. Meshes and height fields are not supported yet.
+
+use super::linalg::row;
+use super::{not_implemented, Data, EngineError, Model, MINVAL};
+use crate::abi::mjtGeom_::*;
+use crate::math::{norm3, Mat3, Vec3};
+
+/// Number of geom groups (mjNGROUP).
+const NGROUP: i32 = 6;
+
+/// Ray point and direction in the geom frame.
+fn to_local(pos: &Vec3, mat: &Mat3, pnt: &Vec3, vec: &Vec3) -> (Vec3, Vec3) {
+    let dif = [pnt[0] - pos[0], pnt[1] - pos[1], pnt[2] - pos[2]];
+    let tr = |v: &Vec3| {
+        [
+            mat[0] * v[0] + mat[3] * v[1] + mat[6] * v[2],
+            mat[1] * v[0] + mat[4] * v[1] + mat[7] * v[2],
+            mat[2] * v[0] + mat[5] * v[1] + mat[8] * v[2],
+        ]
+    };
+    (tr(&dif), tr(vec))
+}
+
+/// Roots of a*x^2 + 2*b*x + c = 0 (both -1 without real roots) and the smallest
+/// non-negative one, or -1.
+fn quadratic(a: f64, b: f64, c: f64) -> (f64, [f64; 2]) {
+    let det = b * b - a * c;
+    if det < MINVAL {
+        return (-1.0, [-1.0, -1.0]);
+    }
+    let det = det.sqrt();
+    let x = [(-b - det) / a, (-b + det) / a];
+    let best = if x[0] >= 0.0 {
+        x[0]
+    } else if x[1] >= 0.0 {
+        x[1]
+    } else {
+        -1.0
+    };
+    (best, x)
+}
+
+/// Keeps the smaller non-negative distance.
+fn nearer(x: f64, sol: f64) -> f64 {
+    if x < 0.0 || sol < x {
+        sol
+    } else {
+        x
+    }
+}
+
+fn plane(pos: &Vec3, mat: &Mat3, size: &[f64], pnt: &Vec3, vec: &Vec3) -> f64 {
+    let (lp, lv) = to_local(pos, mat, pnt, vec);
+    // only rays coming towards the front face
+    if lv[2] > -MINVAL {
+        return -1.0;
+    }
+    let x = -lp[2] / lv[2];
+    if x < 0.0 {
+        return -1.0;
+    }
+    let p0 = lp[0] + x * lv[0];
+    let p1 = lp[1] + x * lv[1];
+    if (size[0] <= 0.0 || p0.abs() <= size[0]) && (size[1] <= 0.0 || p1.abs() <= size[1]) {
+        x
+    } else {
+        -1.0
+    }
+}
+
+fn sphere(pos: &Vec3, radius: f64, pnt: &Vec3, vec: &Vec3) -> f64 {
+    let dif = [pnt[0] - pos[0], pnt[1] - pos[1], pnt[2] - pos[2]];
+    let a = vec[0] * vec[0] + vec[1] * vec[1] + vec[2] * vec[2];
+    let b = vec[0] * dif[0] + vec[1] * dif[1] + vec[2] * dif[2];
+    let c = dif[0] * dif[0] + dif[1] * dif[1] + dif[2] * dif[2] - radius * radius;
+    quadratic(a, b, c).0
+}
+
+fn capsule(pos: &Vec3, mat: &Mat3, size: &[f64], pnt: &Vec3, vec: &Vec3) -> f64 {
+    if sphere(pos, size[0] + size[1], pnt, vec) < 0.0 {
+        return -1.0;
+    }
+    let (lp, lv) = to_local(pos, mat, pnt, vec);
+    let mut x = -1.0;
+
+    // round side, between the flat ends
+    let a = lv[0] * lv[0] + lv[1] * lv[1];
+    let b = lv[0] * lp[0] + lv[1] * lp[1];
+    let c = lp[0] * lp[0] + lp[1] * lp[1] - size[0] * size[0];
+    let (sol, _) = quadratic(a, b, c);
+    if sol >= 0.0 && (lp[2] + sol * lv[2]).abs() <= size[1] {
+        x = nearer(x, sol);
+    }
+
+    // caps: the outer half of each end sphere
+    let mut ldif = [lp[0], lp[1], lp[2] - size[1]];
+    let a = lv[0] * lv[0] + lv[1] * lv[1] + lv[2] * lv[2];
+    let b = lv[0] * ldif[0] + lv[1] * ldif[1] + lv[2] * ldif[2];
+    let c = ldif[0] * ldif[0] + ldif[1] * ldif[1] + ldif[2] * ldif[2] - size[0] * size[0];
+    let (_, xx) = quadratic(a, b, c);
+    for s in xx {
+        if s >= 0.0 && lp[2] + s * lv[2] >= size[1] {
+            x = nearer(x, s);
+        }
+    }
+    ldif[2] = lp[2] + size[1];
+    let b = lv[0] * ldif[0] + lv[1] * ldif[1] + lv[2] * ldif[2];
+    let c = ldif[0] * ldif[0] + ldif[1] * ldif[1] + ldif[2] * ldif[2] - size[0] * size[0];
+    let (_, xx) = quadratic(a, b, c);
+    for s in xx {
+        if s >= 0.0 && lp[2] + s * lv[2] <= -size[1] {
+            x = nearer(x, s);
+        }
+    }
+    x
+}
+
+fn ellipsoid(pos: &Vec3, mat: &Mat3, size: &[f64], pnt: &Vec3, vec: &Vec3) -> f64 {
+    let (lp, lv) = to_local(pos, mat, pnt, vec);
+    let s = [
+        1.0 / (size[0] * size[0]),
+        1.0 / (size[1] * size[1]),
+        1.0 / (size[2] * size[2]),
+    ];
+    let a = s[0] * lv[0] * lv[0] + s[1] * lv[1] * lv[1] + s[2] * lv[2] * lv[2];
+    let b = s[0] * lv[0] * lp[0] + s[1] * lv[1] * lp[1] + s[2] * lv[2] * lp[2];
+    let c = s[0] * lp[0] * lp[0] + s[1] * lp[1] * lp[1] + s[2] * lp[2] * lp[2] - 1.0;
+    quadratic(a, b, c).0
+}
+
+fn cylinder(pos: &Vec3, mat: &Mat3, size: &[f64], pnt: &Vec3, vec: &Vec3) -> f64 {
+    if sphere(
+        pos,
+        (size[0] * size[0] + size[1] * size[1]).sqrt(),
+        pnt,
+        vec,
+    ) < 0.0
+    {
+        return -1.0;
+    }
+    let (lp, lv) = to_local(pos, mat, pnt, vec);
+    let mut x = -1.0;
+
+    // flat ends, within the radius
+    if lv[2].abs() > MINVAL {
+        for side in [-1.0, 1.0] {
+            let sol = (side * size[1] - lp[2]) / lv[2];
+            if sol >= 0.0 {
+                let p0 = lp[0] + sol * lv[0];
+                let p1 = lp[1] + sol * lv[1];
+                if p0 * p0 + p1 * p1 <= size[0] * size[0] {
+                    x = nearer(x, sol);
+                }
+            }
+        }
+    }
+
+    // round side, between the flat ends
+    let a = lv[0] * lv[0] + lv[1] * lv[1];
+    let b = lv[0] * lp[0] + lv[1] * lp[1];
+    let c = lp[0] * lp[0] + lp[1] * lp[1] - size[0] * size[0];
+    let (sol, _) = quadratic(a, b, c);
+    if sol >= 0.0 && (lp[2] + sol * lv[2]).abs() <= size[1] {
+        x = nearer(x, sol);
+    }
+    x
+}
+
+fn boxed(pos: &Vec3, mat: &Mat3, size: &[f64], pnt: &Vec3, vec: &Vec3) -> f64 {
+    let radius = (size[0] * size[0] + size[1] * size[1] + size[2] * size[2]).sqrt();
+    if sphere(pos, radius, pnt, vec) < 0.0 {
+        return -1.0;
+    }
+    const FACE: [[usize; 2]; 3] = [[1, 2], [0, 2], [0, 1]];
+    let (lp, lv) = to_local(pos, mat, pnt, vec);
+    let mut x = -1.0;
+    for i in 0..3 {
+        if lv[i].abs() > MINVAL {
+            for side in [-1.0, 1.0] {
+                let sol = (side * size[i] - lp[i]) / lv[i];
+                if sol >= 0.0 {
+                    let [j, k] = FACE[i];
+                    let p0 = lp[j] + sol * lv[j];
+                    let p1 = lp[k] + sol * lv[k];
+                    if p0.abs() <= size[j] && p1.abs() <= size[k] {
+                        x = nearer(x, sol);
+                    }
+                }
+            }
+        }
+    }
+    x
+}
+
+/// Distance from `pnt` along `vec` to a primitive geom of type `geomtype` at (pos, mat) with
+/// `size`, or -1 on a miss (mju_rayGeom; meshes and height fields excluded).
+pub fn ray_geom(
+    pos: &Vec3,
+    mat: &Mat3,
+    size: &[f64],
+    pnt: &Vec3,
+    vec: &Vec3,
+    geomtype: i32,
+) -> Result<f64, EngineError> {
+    let t = |g: crate::abi::mjtGeom_| geomtype == g as i32;
+    Ok(if t(mjGEOM_PLANE) {
+        plane(pos, mat, size, pnt, vec)
+    } else if t(mjGEOM_SPHERE) {
+        sphere(pos, size[0], pnt, vec)
+    } else if t(mjGEOM_CAPSULE) {
+        capsule(pos, mat, size, pnt, vec)
+    } else if t(mjGEOM_ELLIPSOID) {
+        ellipsoid(pos, mat, size, pnt, vec)
+    } else if t(mjGEOM_CYLINDER) {
+        cylinder(pos, mat, size, pnt, vec)
+    } else if t(mjGEOM_BOX) {
+        boxed(pos, mat, size, pnt, vec)
+    } else {
+        return Err(EngineError(format!(
+            "mju_rayGeom: unexpected geom type {geomtype}"
+        )));
+    })
+}
+
+/// Is geom `g` left out of ray casting: the excluded body, invisible (alpha 0, own or
+/// material), static when static geoms are off, or a hidden group (planes and height fields
+/// ignore groups)?
+fn eliminated(m: &Model, g: usize, groups: Option<&[u8]>, with_static: bool, exclude: i32) -> bool {
+    let body = m.geom_bodyid()[g];
+    if body == exclude {
+        return true;
+    }
+    let mat = m.geom_matid()[g];
+    if mat < 0 && m.geom_rgba()[4 * g + 3] == 0.0 {
+        return true;
+    }
+    if mat >= 0 && m.mat_rgba()[4 * mat as usize + 3] == 0.0 {
+        return true;
+    }
+    if !with_static && body == 0 {
+        return true;
+    }
+    let ty = m.geom_type()[g];
+    if ty == mjGEOM_PLANE as i32 || ty == mjGEOM_HFIELD as i32 {
+        return false;
+    }
+    match groups {
+        None => false,
+        Some(gr) => gr[m.geom_group()[g].clamp(0, NGROUP - 1) as usize] == 0,
+    }
+}
+
+/// Nearest geom hit by the ray from `pnt` along `vec`: (distance, geom id), or (-1, -1)
+/// (mj_ray). Meshes and height fields are not supported yet.
+pub fn ray(
+    m: &Model,
+    d: &Data,
+    pnt: &Vec3,
+    vec: &Vec3,
+    groups: Option<&[u8]>,
+    with_static: bool,
+    exclude: i32,
+) -> Result<(f64, i32), EngineError> {
+    if norm3(vec) < MINVAL {
+        return Err(EngineError("mj_ray: vector length is too small".into()));
+    }
+    let (mut dist, mut id) = (-1.0, -1);
+    for g in 0..m.raw.ngeom as usize {
+        if eliminated(m, g, groups, with_static, exclude) {
+            continue;
+        }
+        let ty = m.geom_type()[g];
+        if ty == mjGEOM_MESH as i32 || ty == mjGEOM_HFIELD as i32 {
+            return Err(not_implemented("rays against meshes and height fields are"));
+        }
+        let x = ray_geom(
+            &row(d.geom_xpos, g),
+            &row(d.geom_xmat, g),
+            &m.geom_size()[3 * g..3 * g + 3],
+            pnt,
+            vec,
+            ty,
+        )?;
+        if x >= 0.0 && (x < dist || dist < 0.0) {
+            dist = x;
+            id = g as i32;
+        }
+    }
+    Ok((dist, id))
+}
