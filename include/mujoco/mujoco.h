@@ -278,6 +278,12 @@ void *mju_malloc(size_t size);
 
 void mju_free(void *ptr);
 
+void mj_resetCallbacks(void);
+
+int mj_activate(const char *_filename);
+
+void mj_deactivate(void);
+
 int mj_version(void);
 
 const char *mj_versionString(void);
@@ -332,8 +338,6 @@ void mj_freeLastXML(void);
 
 int mj_printSchema(const char *filename, char *buffer, int buffer_sz, int flg_html, int flg_pad);
 
-void mj_resetCallbacks(void);
-
 int mj_setLengthRange(mjModel *m,
                       mjData *d,
                       int index,
@@ -360,10 +364,6 @@ mjtNum mju_raySkin(int nface,
                    const mjtNum *pnt,
                    const mjtNum *vec,
                    int *vertid);
-
-int mj_activate(const char *filename);
-
-void mj_deactivate(void);
 
 void mj_printFormattedModel(const mjModel *m, const char *filename, const char *float_format);
 

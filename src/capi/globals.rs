@@ -154,3 +154,26 @@ pub static mjRNDSTRING: StrTable3<10> = StrTable3([
     [c!("Id Color"), c!("0"), c!(".")],
     [c!("Cull Face"), c!("1"), c!("")],
 ]);
+
+/// Clears every engine callback.
+#[no_mangle]
+pub unsafe extern "C" fn mj_resetCallbacks() {
+    mjcb_passive = None;
+    mjcb_control = None;
+    mjcb_contactfilter = None;
+    mjcb_sensor = None;
+    mjcb_time = None;
+    mjcb_act_bias = None;
+    mjcb_act_gain = None;
+    mjcb_act_dyn = None;
+}
+
+/// Licenses are gone since 2.1: activation always succeeds.
+#[no_mangle]
+pub extern "C" fn mj_activate(_filename: *const c_char) -> std::os::raw::c_int {
+    1
+}
+
+/// Nothing to release (kept for compatibility, as in 2.2.2).
+#[no_mangle]
+pub extern "C" fn mj_deactivate() {}

@@ -25,11 +25,6 @@ pub unsafe extern "C" fn mj_printSchema(filename: *const c_char, buffer: *mut c_
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mj_resetCallbacks() {
-    pending("mj_resetCallbacks");
-}
-
-#[no_mangle]
 pub unsafe extern "C" fn mj_setLengthRange(m: *mut mjModel, d: *mut mjData, index: c_int, opt: *const mjLROpt, error: *mut c_char, error_sz: c_int) -> c_int {
     pending("mj_setLengthRange");
     0 as c_int
@@ -51,16 +46,5 @@ pub unsafe extern "C" fn mj_rayMesh(m: *const mjModel, d: *const mjData, geomid:
 pub unsafe extern "C" fn mju_raySkin(nface: c_int, nvert: c_int, face: *const c_int, vert: *const f32, pnt: *const mjtNum, vec: *const mjtNum, vertid: *mut c_int) -> mjtNum {
     pending("mju_raySkin");
     0.0
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_activate(filename: *const c_char) -> c_int {
-    pending("mj_activate");
-    0 as c_int
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_deactivate() {
-    pending("mj_deactivate");
 }
 
