@@ -5,6 +5,7 @@
 //! not implemented.
 
 use super::inertia::solve_m2;
+use super::jacdif::{merge_chain, merge_chain_simple};
 use super::jacobian::jac;
 use super::linalg::{max, min};
 use super::support::warning;
@@ -211,49 +212,6 @@ fn add_rows(
         d.raw.nf += size as i32;
     }
     Ok(true)
-}
-
-/// Increasing list of the dofs moving either body (mj_mergeChain); returns its length.
-fn merge_chain(m: &Model, chain: &mut [i32], mut b1: usize, mut b2: usize) -> usize {
-    let (dofnum, parent) = (m.body_dofnum(), m.body_parentid());
-    while b1 != 0 && dofnum[b1] == 0 {
-        b1 = parent[b1] as usize;
-    }
-    while b2 != 0 && dofnum[b2] == 0 {
-        b2 = parent[b2] as usize;
-    }
-    if b1 == 0 && b2 == 0 {
-        return 0;
-    }
-    let mut da1 = m.body_dofadr()[b1] + dofnum[b1] - 1;
-    let mut da2 = m.body_dofadr()[b2] + dofnum[b2] - 1;
-    let mut n = 0;
-    while da1 >= 0 || da2 >= 0 {
-        let c = da1.max(da2);
-        chain[n] = c;
-        if da1 == c {
-            da1 = m.dof_parentid()[da1 as usize];
-        }
-        if da2 == c {
-            da2 = m.dof_parentid()[da2 as usize];
-        }
-        n += 1;
-    }
-    chain[..n].reverse();
-    n
-}
-
-/// Dofs of two simple bodies, lower body id first (mj_mergeChainSimple).
-fn merge_chain_simple(m: &Model, chain: &mut [i32], b1: usize, b2: usize) -> usize {
-    let (b1, b2) = if b1 > b2 { (b2, b1) } else { (b1, b2) };
-    let (n1, n2) = (m.body_dofnum()[b1] as usize, m.body_dofnum()[b2] as usize);
-    for i in 0..n1 {
-        chain[i] = m.body_dofadr()[b1] + i as i32;
-    }
-    for i in 0..n2 {
-        chain[n1 + i] = m.body_dofadr()[b2] + i as i32;
-    }
-    n1 + n2
 }
 
 /// Point Jacobian in the columns of `chain` (mj_jacSparse): rows of length n = chain.len().
