@@ -169,16 +169,21 @@ fn bad_state(m: &Model, d: &mut Data, kind: mjtWarning_, i: usize) -> Result<(),
     Ok(())
 }
 
-/// Forward dynamics, skipping stages up to `skipstage` (mj_forwardSkip).
-pub fn forward_skip(
+type Stage = fn(&Model, &mut Data) -> Result<(), EngineError>;
+
+/// The position and velocity stages not skipped, each followed by its sensors and energy:
+/// shared by forward and inverse dynamics, which differ only in the stage functions.
+pub fn pos_vel_stages(
     m: &Model,
     d: &mut Data,
     skipstage: i32,
     skipsensor: bool,
+    position: Stage,
+    velocity: Stage,
 ) -> Result<(), EngineError> {
     let energy = enabled(m, mjtEnableBit_::mjENBL_ENERGY);
     if skipstage < mjtStage_::mjSTAGE_POS as i32 {
-        fwd_position(m, d)?;
+        position(m, d)?;
         if !skipsensor {
             sensor_pos(m, d)?;
         }
@@ -187,7 +192,7 @@ pub fn forward_skip(
         }
     }
     if skipstage < mjtStage_::mjSTAGE_VEL as i32 {
-        fwd_velocity(m, d)?;
+        velocity(m, d)?;
         if !skipsensor {
             sensor_vel(m, d)?;
         }
@@ -195,6 +200,17 @@ pub fn forward_skip(
             energy_vel(m, d)?;
         }
     }
+    Ok(())
+}
+
+/// Forward dynamics, skipping stages up to `skipstage` (mj_forwardSkip).
+pub fn forward_skip(
+    m: &Model,
+    d: &mut Data,
+    skipstage: i32,
+    skipsensor: bool,
+) -> Result<(), EngineError> {
+    pos_vel_stages(m, d, skipstage, skipsensor, fwd_position, fwd_velocity)?;
     fwd_actuation(m, d)?;
     fwd_acceleration(m, d)?;
     fwd_constraint(m, d)?;

@@ -8,10 +8,9 @@ use super::inertia::{crb, factor_m};
 use super::kinematics::{camlight, com_pos, kinematics};
 use super::linalg::dot;
 use super::rne::rne_with;
-use super::sensor::{sensor_acc, sensor_pos, sensor_vel};
-use super::support::{energy_pos, energy_vel};
+use super::sensor::sensor_acc;
 use super::transmission::transmission;
-use super::{enabled, tick, Data, EngineError, Model};
+use super::{tick, Data, EngineError, Model};
 use crate::abi::*;
 use mjtTimer_::*;
 
@@ -66,26 +65,7 @@ pub fn inverse_skip(
     skipstage: i32,
     skipsensor: bool,
 ) -> Result<(), EngineError> {
-    let energy = enabled(m, mjtEnableBit_::mjENBL_ENERGY);
-    if skipstage < mjtStage_::mjSTAGE_POS as i32 {
-        inv_position(m, d)?;
-        if !skipsensor {
-            sensor_pos(m, d)?;
-        }
-        if energy {
-            energy_pos(m, d);
-        }
-    }
-    if skipstage < mjtStage_::mjSTAGE_VEL as i32 {
-        inv_velocity(m, d)?;
-        if !skipsensor {
-            sensor_vel(m, d)?;
-        }
-        if energy {
-            energy_vel(m, d)?;
-        }
-    }
-
+    super::forward::pos_vel_stages(m, d, skipstage, skipsensor, inv_position, inv_velocity)?;
     inv_constraint(m, d)?;
     let nv = m.raw.nv as usize;
     let qacc = std::mem::take(&mut d.qacc);
