@@ -3,7 +3,8 @@
 //
 //   harness-ref  record  MODEL DIR   reference run: model, trajectory, states, all checks -> DIR/ref
 //   harness-ours replay  MODEL DIR   our run: the same checks at the reference's states -> DIR/ours
-//   (record/replay MODEL DIR --model-only: the compiled model only)
+//   (record/replay MODEL DIR --model-only: the compiled model only; --groups a,b: those check
+//   groups only, plus forward, which the others read)
 //   harness-ref  compare DIR [-v] [--groups a,b]   worst relative error per quantity, exit 1 on
 //                                    any failure (all groups, or the listed ones)
 //
@@ -108,7 +109,14 @@ std::string saved(const Writer& w, const std::string& path) {
 
 const int kSeconds = 120;
 
-int record(const char* model, const std::string& dir, bool model_only) {
+// Is the check group selected by the comma-separated list (empty: all)? "forward" always runs:
+// other groups read the reference's forward results.
+bool selected(const std::string& only, const std::string& group) {
+  return only.empty() || group == "forward" || group == "noise" ||
+         ("," + only + ",").find("," + group + ",") != std::string::npos;
+}
+
+int record(const char* model, const std::string& dir, bool model_only, const std::string& only) {
   std::string out = dir + "/ref/";
   bool ok = isolated(out + "model.status", [&]() -> std::string {
     std::string e;
@@ -129,7 +137,20 @@ int record(const char* model, const std::string& dir, bool model_only) {
     std::string r = saved(states, dir + "/states.bin");
     return r.empty() ? saved(traj, out + "traj.bin") : r;
   }, kSeconds) && ok;
-  for (const auto& [group, check] : state_checks()) {
+  // the reference's noise floors: a perturbed trajectory, and forward at perturbed states
+  std::vector<std::pair<std::string, Check>> checks = state_checks();
+  checks.push_back({"noise", check_noise});
+  isolated(out + "trajnoise.status", [&]() -> std::string {
+    std::string e;
+    mjModel* m = load(model, e);
+    if (!m) return e;
+    mjData* d = mj_makeData(m);
+    Writer traj;
+    run_trajectory(m, d, traj, nullptr, true);
+    return saved(traj, out + "trajnoise.bin");
+  }, kSeconds);
+  for (const auto& [group, check] : checks) {
+    if (!selected(only, group)) continue;
     ok = isolated(out + group + ".status", [&, group = group, check = check]() -> std::string {
       std::string e;
       mjModel* m = load(model, e);
@@ -148,7 +169,7 @@ int record(const char* model, const std::string& dir, bool model_only) {
   return ok ? 0 : 1;
 }
 
-int replay(const char* model, const std::string& dir, bool model_only) {
+int replay(const char* model, const std::string& dir, bool model_only, const std::string& only) {
   std::string out = dir + "/ours/";
   std::string ref = dir + "/ref/";
   std::remove((out + "traj.note").c_str());
@@ -184,6 +205,7 @@ int replay(const char* model, const std::string& dir, bool model_only) {
     return saved(traj, out + "traj.bin");
   }, kSeconds);
   for (const auto& [group, check] : state_checks()) {
+    if (!selected(only, group)) continue;
     isolated(out + group + ".status", [&, group = group, check = check]() -> std::string {
       if (!have_ref) return "no reference model.bin";
       mjModel* m = transplant_model(refmodel);
@@ -211,9 +233,18 @@ int compare(const std::string& dir, bool verbose, const std::string& only) {
   }
   int npass = 0;
   double worst = 0, residual = 0;
+  Floors floors = noise_floors(dir + "/ref/forward.bin", dir + "/ref/noise.bin");
+  Floors traj_floors = noise_floors(dir + "/ref/traj.bin", dir + "/ref/trajnoise.bin");
+  std::printf("  noise floor of the reference (state perturbed by %.0e): forward %.2e, trajectory %.2e\n",
+              kNoise, floors.model, traj_floors.model);
+  if (verbose) {
+    std::printf("    forward floor at %s\n    trajectory floor at %s\n", floors.at.c_str(),
+                traj_floors.at.c_str());
+  }
   for (const std::string& g : groups) {
     double gw;
-    bool ok = compare_group(dir, g, tolerance(g), verbose, &gw);
+    const Floors* f = static_group(g) ? nullptr : g == "traj" ? &traj_floors : &floors;
+    bool ok = compare_group(dir, g, tolerance(g), verbose, &gw, f);
     if (g == "traj") {
       std::string note = read_status(dir + "/ours/traj.note");
       if (note.rfind("no result", 0) != 0) std::printf("  %-16s note  %s\n", "traj", note.c_str());
@@ -251,7 +282,7 @@ bool right_library() {
 
 int usage() {
   std::fprintf(stderr,
-               "usage: harness record MODEL DIR [--model-only] | harness replay MODEL DIR [--model-only] | "
+               "usage: harness record|replay MODEL DIR [--model-only] [--groups g1,g2,...] | "
                "harness compare DIR [-v] [--groups g1,g2,...]\n");
   return 2;
 }
@@ -277,8 +308,14 @@ int main(int argc, char** argv) {
   mkdir(dir.c_str(), 0755);
   mkdir((dir + "/ref").c_str(), 0755);
   mkdir((dir + "/ours").c_str(), 0755);
-  bool model_only = argc > 4 && !std::strcmp(argv[4], "--model-only");
-  if (mode == "record") return record(argv[2], dir, model_only);
-  if (mode == "replay") return replay(argv[2], dir, model_only);
+  bool model_only = false;
+  std::string only;
+  for (int i = 4; i < argc; i++) {
+    if (!std::strcmp(argv[i], "--model-only")) model_only = true;
+    else if (!std::strcmp(argv[i], "--groups") && i + 1 < argc) only = argv[++i];
+    else return usage();
+  }
+  if (mode == "record") return record(argv[2], dir, model_only, only);
+  if (mode == "replay") return replay(argv[2], dir, model_only, only);
   return usage();
 }

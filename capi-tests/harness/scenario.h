@@ -19,6 +19,7 @@ constexpr int kSteps = 1000;      // trajectory length
 constexpr int kStateEvery = 20;   // a state every 20 steps: 50 states
 constexpr int kTrajEvery = 10;    // trajectory records every 10 steps
 constexpr double kDt = 0.01;      // time step of the integratePos/differentiatePos checks
+constexpr double kNoise = 1e-14;  // relative state perturbation that measures the noise floor
 
 inline std::string I(int a) { return std::to_string(a); }
 inline std::string I(int a, int b) { return std::to_string(a) + "." + std::to_string(b); }
@@ -59,9 +60,23 @@ inline void reset(const mjModel* m, mjData* d) {
   if (m->nkey > 0) mj_resetDataKeyframe(m, d, 0);
 }
 
+// Moves the state (qpos, qvel, act) by kNoise relative (absolute below 1, as the comparator),
+// alternating signs: the reference's own response is the noise floor a comparison cannot beat.
+inline void perturb(const mjModel* m, mjData* d) {
+  auto scale = [](mjtNum* x, int n) {
+    for (int i = 0; i < n; i++) x[i] += (i % 2 ? -kNoise : kNoise) * std::max(1.0, std::fabs(x[i]));
+  };
+  scale(d->qpos, m->nq);
+  scale(d->qvel, m->nv);
+  scale(d->act, m->na);
+}
+
 // The 1000-step trajectory: records qpos/qvel/act/qacc_warmstart/time, and optionally the states.
-inline void run_trajectory(const mjModel* m, mjData* d, Writer& traj, Writer* states) {
+// perturbed: start from the perturbed initial state (the reference's trajectory noise floor).
+inline void run_trajectory(const mjModel* m, mjData* d, Writer& traj, Writer* states,
+                           bool perturbed = false) {
   reset(m, d);
+  if (perturbed) perturb(m, d);
   std::vector<mjtNum> mocap0(d->mocap_pos, d->mocap_pos + 3 * m->nmocap);
   int nstate = 0;
   for (int step = 0; step < kSteps; step++) {
@@ -101,6 +116,17 @@ inline void at_state(const mjModel* m, mjData* d, const Inputs& in, int k, bool 
 inline void check_forward(const mjModel* m, mjData* d, const Inputs& in, Writer& w) {
   for (int k = 0; k < in.nstate; k++) {
     at_state(m, d, in, k, false);
+    mj_forward(m, d);
+    dump_data(m, d, w, I(k));
+  }
+}
+
+// mj_forward at each state perturbed by kNoise: recorded by the reference only, against its
+// "forward" results it gives the noise floor of the state checks.
+inline void check_noise(const mjModel* m, mjData* d, const Inputs& in, Writer& w) {
+  for (int k = 0; k < in.nstate; k++) {
+    at_state(m, d, in, k, false);
+    perturb(m, d);
     mj_forward(m, d);
     dump_data(m, d, w, I(k));
   }
@@ -376,7 +402,15 @@ inline std::vector<std::pair<std::string, Check>> state_checks() {
   };
 }
 
-// Tolerance on the relative error (compare.h) of each check group.
+// Groups whose results do not depend on the dynamics (no noise-floor allowance).
+inline bool static_group(const std::string& group) {
+  return group == "model" || group == "names" || group == "consistency" ||
+         group == "integratePos" || group == "differentiatePos";
+}
+
+// Tolerance on the relative error (compare.h) of each check group. Dynamic groups also allow
+// 1000 times the reference's noise floor of each quantity (harness.cc: state checks against
+// forward at perturbed states, traj against a perturbed trajectory).
 inline double tolerance(const std::string& group) {
   if (group == "model") return 1e-9;
   if (group == "traj") return 1e-8;
