@@ -235,9 +235,13 @@ int compare(const std::string& dir, bool verbose, const std::string& only) {
   double worst = 0, residual = 0;
   Floors floors = noise_floors(dir + "/ref/forward.bin", dir + "/ref/noise.bin");
   Floors traj_floors = noise_floors(dir + "/ref/traj.bin", dir + "/ref/trajnoise.bin");
-  std::printf("  noise floor of the reference (state perturbed by %.0e): forward %.2e, trajectory %.2e\n",
-              kNoise, floors.model, traj_floors.model);
-  if (verbose) {
+  bool dynamic = false;
+  for (const std::string& g : groups) dynamic = dynamic || !static_group(g);
+  if (dynamic) {
+    std::printf("  noise floor of the reference (state perturbed by %.0e): forward %.2e, trajectory %.2e\n",
+                kNoise, floors.model, traj_floors.model);
+  }
+  if (dynamic && verbose) {
     std::printf("    forward floor at %s\n    trajectory floor at %s\n", floors.at.c_str(),
                 traj_floors.at.c_str());
   }
