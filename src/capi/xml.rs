@@ -82,13 +82,19 @@ thread_local! {
 
 unsafe extern "C" fn keep_error(msg: *const c_char) {
     let text = crate::capi::errmem::cstr(msg).into_owned();
-    STEP_ERROR.with(|w| *w.borrow_mut() = text);
+    // the first error ends 2.2.2's test step
+    STEP_ERROR.with(|w| {
+        if w.borrow().is_empty() {
+            *w.borrow_mut() = text;
+        }
+    });
 }
 
 /// One step from the reset state, as 2.2.2's compiler takes: its warnings (unstable
-/// simulation, singular inertia) reach the error buffer. Engine errors are not fatal here, so a
-/// feature the engine lacks does not stop a model from loading.
-unsafe fn test_step(m: *mut mjModel) {
+/// simulation, singular inertia) reach the error buffer, and an engine error rejects the model
+/// (Err: the message). A feature this engine lacks ("not implemented") does not stop a model
+/// from loading: the user meets it at the first mj_step.
+unsafe fn test_step(m: *mut mjModel) -> Result<(), String> {
     let saved = errmem::_mjPRIVATE__get_tls_error_fn();
     errmem::_mjPRIVATE__set_tls_error_fn(Some(keep_error));
     let d = crate::capi::io::mj_makeData(m);
@@ -98,7 +104,12 @@ unsafe fn test_step(m: *mut mjModel) {
         crate::capi::io::mj_deleteData(d);
     }
     errmem::_mjPRIVATE__set_tls_error_fn(saved);
-    STEP_ERROR.with(|w| w.borrow_mut().clear());
+    let error = STEP_ERROR.with(|w| std::mem::take(&mut *w.borrow_mut()));
+    if error.is_empty() || error.contains("not implemented") {
+        Ok(())
+    } else {
+        Err(error)
+    }
 }
 
 /// Parses, compiles and allocates; returns the model or the error text.
@@ -149,7 +160,10 @@ unsafe fn load(filename: *const c_char, vfs: *const mjVFS) -> Result<*mut mjMode
         crate::abi::alloc::delete_model(m);
         return Err(format!("Error: {msg}"));
     }
-    test_step(m);
+    if let Err(e) = test_step(m) {
+        crate::abi::alloc::delete_model(m);
+        return Err(format!("Error: engine error: {e}"));
+    }
     Ok(m)
 }
 

@@ -64,8 +64,61 @@ fn element(e: &BytesStart, line: i32) -> Result<Element, String> {
     })
 }
 
+/// Blanks the nodes tinyxml2 parses as "unknown" and skips: `<!` not opening a comment or
+/// CDATA (DOCTYPE included) up to the next `>`. Newlines stay, so line numbers hold.
+fn blank_unknown_nodes(text: &str) -> std::borrow::Cow<'_, str> {
+    let b = text.as_bytes();
+    let mut out: Option<Vec<u8>> = None;
+    let find = |from: usize, pat: &[u8]| {
+        b[from.min(b.len())..]
+            .windows(pat.len())
+            .position(|w| w == pat)
+            .map(|p| from + p + pat.len())
+    };
+    let mut i = 0;
+    while i < b.len() {
+        if b[i] != b'<' {
+            i += 1;
+            continue;
+        }
+        let rest = &b[i..];
+        if rest.starts_with(b"<!--") {
+            i = find(i + 4, b"-->").unwrap_or(b.len());
+        } else if rest.starts_with(b"<![CDATA[") {
+            i = find(i + 9, b"]]>").unwrap_or(b.len());
+        } else if rest.starts_with(b"<!") {
+            let end = find(i, b">").unwrap_or(b.len());
+            let o = out.get_or_insert_with(|| b.to_vec());
+            for c in &mut o[i..end] {
+                if *c != b'\n' {
+                    *c = b' ';
+                }
+            }
+            i = end;
+        } else {
+            // a tag: skip to its end, over quoted attribute values
+            let mut quote = 0u8;
+            i += 1;
+            while i < b.len() && (quote != 0 || b[i] != b'>') {
+                if quote == 0 && (b[i] == b'"' || b[i] == b'\'') {
+                    quote = b[i];
+                } else if b[i] == quote {
+                    quote = 0;
+                }
+                i += 1;
+            }
+        }
+    }
+    match out {
+        // only whole ASCII-delimited runs were replaced by ASCII: still UTF-8
+        Some(o) => std::borrow::Cow::Owned(String::from_utf8(o).unwrap_or_default()),
+        None => std::borrow::Cow::Borrowed(text),
+    }
+}
+
 /// Parses a whole document; returns its root element or a message naming the problem and line.
 pub fn parse(text: &str) -> Result<Element, String> {
+    let text = &*blank_unknown_nodes(text);
     let lines = Lines::new(text);
     let mut reader = Reader::from_str(text);
     reader.config_mut().trim_text(true);
