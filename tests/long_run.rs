@@ -1,0 +1,104 @@
+//! 10,000-step runs: no NaN and no warning the reference does not also give, no crash, no hang.
+//! Models: capi-tests/models.list (must match), then the models of models-extra.list and the
+//! corpus (when present) that both libraries load: a run our engine stops with "not
+//! implemented" is counted as not supported yet, anything else must match the reference.
+
+mod common;
+use common::*;
+use std::path::{Path, PathBuf};
+
+const STEPS: &str = "10000";
+
+fn corpus_models() -> Vec<String> {
+    let dir = [
+        std::env::var_os("RUJOCO_CORPUS").map(PathBuf::from),
+        Some(root().join("../shared/corpus")),
+    ]
+    .into_iter()
+    .flatten()
+    .find(|p| p.is_dir());
+    let mut out = Vec::new();
+    fn walk(d: &Path, out: &mut Vec<String>) {
+        let mut es: Vec<_> = std::fs::read_dir(d)
+            .into_iter()
+            .flatten()
+            .flatten()
+            .map(|e| e.path())
+            .collect();
+        es.sort();
+        for p in es {
+            if p.is_dir() {
+                walk(&p, out);
+            } else if p.extension().is_some_and(|e| e == "xml") {
+                out.push(p.to_string_lossy().into_owned());
+            }
+        }
+    }
+    if let Some(d) = dir {
+        walk(&d, &mut out);
+    }
+    out
+}
+
+fn outcomes(prog: &Path, files: &[String]) -> Vec<String> {
+    let mut args = vec![STEPS];
+    args.extend(files.iter().map(String::as_str));
+    let o = run(prog, &args, &[], 3600);
+    let lines: Vec<String> = text(&o.stdout).lines().map(str::to_string).collect();
+    assert_eq!(
+        lines.len(),
+        files.len(),
+        "longrun output incomplete:\n{}{}",
+        text(&o.stdout),
+        text(&o.stderr)
+    );
+    lines
+}
+
+#[test]
+fn ten_thousand_steps_like_the_reference() {
+    let src = [root().join("capi-tests/longrun.c")];
+    let reference = compile_c(&src, "longrun", Lib::Ref);
+    let ours = compile_c(&src, "longrun", Lib::Ours);
+    let strict = models();
+    let mut files = strict.clone();
+    for f in model_list("models-extra.list")
+        .into_iter()
+        .chain(corpus_models())
+    {
+        if !files.contains(&f) {
+            files.push(f);
+        }
+    }
+    // both libraries at once (2 cores)
+    let (r, o) = std::thread::scope(|s| {
+        let r = s.spawn(|| outcomes(&reference, &files));
+        let o = outcomes(&ours, &files);
+        (r.join().unwrap(), o)
+    });
+    let (mut same, mut unsupported, mut skipped) = (0, 0, 0);
+    let mut wrong = Vec::new();
+    for (f, (r, o)) in files.iter().zip(r.iter().zip(&o)) {
+        let rel = f.strip_prefix(&*root().to_string_lossy()).unwrap_or(f);
+        if !r.starts_with("ok") {
+            skipped += 1; // include files, models the reference rejects or stops on
+        } else if r == o {
+            same += 1;
+        } else if !strict.contains(f) && o.contains("not implemented") {
+            unsupported += 1;
+        } else if !strict.contains(f) && o.starts_with("load-error") {
+            unsupported += 1; // the loader's verdicts are tests/corpus.rs's and loader.rs's
+        } else {
+            wrong.push(format!("{rel}\n    reference: {r}\n    ours:      {o}"));
+        }
+    }
+    let msg = format!(
+        "long runs ({STEPS} steps): {same} models end like the reference (NaN, warnings); \
+         {unsupported} stop on features not supported yet; {} differ; {skipped} files skipped \
+         (the reference rejects or stops)\n{}",
+        wrong.len(),
+        wrong.iter().map(|w| format!("  {w}\n")).collect::<String>()
+    );
+    report("long-run", &msg);
+    assert!(wrong.is_empty(), "{msg}");
+}
