@@ -1,5 +1,5 @@
 //! Optional: compiled-model comparison over a corpus of real models (MuJoCo's and dm_control's),
-//! run only when a corpus is present ($RUJOCO_CORPUS, else ../shared/corpus; capi-tests/run-all
+//! run only when a corpus is present (common::corpus_dirs: $RUJOCO_CORPUS, else ../shared/corpus; run-all
 //! sets RUJOCO_CORPUS to the dm_control 1.0.7 suite from PyPI when ../shared is absent).
 //! A model we cannot compile yet must be rejected with an error, never loaded with other values;
 //! the report (target/capi-tests/reports/corpus.txt) counts identical models; RUJOCO_CORPUS_STRICT=1
@@ -7,46 +7,16 @@
 
 mod common;
 use common::*;
-use std::path::{Path, PathBuf};
-
-fn corpus_dir() -> Option<PathBuf> {
-    let candidates = [
-        std::env::var_os("RUJOCO_CORPUS").map(PathBuf::from),
-        Some(root().join("../shared/corpus")),
-    ];
-    candidates
-        .into_iter()
-        .flatten()
-        .find(|p| p.is_dir())
-        .and_then(|p| p.canonicalize().ok())
-}
-
-fn xml_files(dir: &Path, out: &mut Vec<PathBuf>) {
-    let mut entries: Vec<_> = std::fs::read_dir(dir)
-        .into_iter()
-        .flatten()
-        .flatten()
-        .map(|e| e.path())
-        .collect();
-    entries.sort();
-    for p in entries {
-        if p.is_dir() {
-            xml_files(&p, out);
-        } else if p.extension().is_some_and(|e| e == "xml") {
-            out.push(p);
-        }
-    }
-}
 
 #[test]
 fn corpus_compiled_models() {
-    let Some(corpus) = corpus_dir() else {
+    let dirs = corpus_dirs();
+    if dirs.is_empty() {
         eprintln!("corpus_compiled_models: skipped, no corpus");
         return;
-    };
+    }
     let bin = harness_bin();
-    let mut files = Vec::new();
-    xml_files(&corpus, &mut files);
+    let files = corpus_files();
     let base = work_dir("corpus");
     let (mut same, mut differ, mut rejected) = (Vec::new(), Vec::new(), 0);
     for (i, f) in files.iter().enumerate() {
@@ -78,7 +48,12 @@ fn corpus_compiled_models() {
             &[],
             120,
         );
-        let rel = f.strip_prefix(&corpus).unwrap_or(f).display().to_string();
+        let rel = dirs
+            .iter()
+            .find_map(|d| f.strip_prefix(d.parent().unwrap_or(d)).ok())
+            .unwrap_or(f)
+            .display()
+            .to_string();
         if c.status.success() {
             same.push(rel);
         } else {
@@ -93,7 +68,10 @@ fn corpus_compiled_models() {
     }
     let msg = format!(
         "corpus ({}): {} of {} models compile identically to 2.2.2 ({} files the reference rejects skipped)\n{}",
-        corpus.display(),
+        dirs.iter()
+            .map(|d| d.display().to_string())
+            .collect::<Vec<_>>()
+            .join(", "),
         same.len(),
         same.len() + differ.len(),
         rejected,

@@ -7,7 +7,7 @@
 
 mod common;
 use common::*;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 /// Deterministic pseudo-random numbers (splitmix64).
 struct Rng(u64);
@@ -120,34 +120,6 @@ fn mutate(text: &str, rng: &mut Rng) -> Vec<u8> {
     s.into_bytes()
 }
 
-fn corpus_dir() -> Option<PathBuf> {
-    [
-        std::env::var_os("RUJOCO_CORPUS").map(PathBuf::from),
-        Some(root().join("../shared/corpus")),
-    ]
-    .into_iter()
-    .flatten()
-    .find(|p| p.is_dir())
-    .and_then(|p| p.canonicalize().ok())
-}
-
-fn xml_files(dir: &Path, out: &mut Vec<PathBuf>) {
-    let mut entries: Vec<_> = std::fs::read_dir(dir)
-        .into_iter()
-        .flatten()
-        .flatten()
-        .map(|e| e.path())
-        .collect();
-    entries.sort();
-    for p in entries {
-        if p.is_dir() {
-            xml_files(&p, out);
-        } else if p.extension().is_some_and(|e| e == "xml") {
-            out.push(p);
-        }
-    }
-}
-
 /// A directory mirroring the seed's (symlinks to its entries), so relative includes and
 /// assets resolve; the mutant is written into it.
 fn mirror(seed: &Path, dir: &Path) {
@@ -184,10 +156,7 @@ fn unsupported(msg: &str) -> bool {
 
 /// The seed models both libraries load (verdict "load ..." on each).
 fn seeds(reference: &Path, ours: &Path) -> Vec<String> {
-    let mut files = Vec::new();
-    if let Some(c) = corpus_dir() {
-        xml_files(&c, &mut files);
-    }
+    let mut files = corpus_files();
     xml_files(&root().join("models"), &mut files);
     let files: Vec<String> = files
         .iter()
@@ -209,7 +178,7 @@ fn mutated_models_get_the_reference_verdict() {
     let ours = compile_c(&src, "loader", Lib::Ours);
     let seeds = seeds(&reference, &ours);
     assert!(!seeds.is_empty(), "no seed model loads in both libraries");
-    let count = if corpus_dir().is_some() { 1000 } else { 300 };
+    let count = if corpus_dirs().is_empty() { 300 } else { 1000 };
     let base = work_dir("mutants");
     let mut rng = Rng(2022);
     let mut files = Vec::new();

@@ -5,39 +5,15 @@
 
 mod common;
 use common::*;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 const STEPS: &str = "10000";
 
 fn corpus_models() -> Vec<String> {
-    let dir = [
-        std::env::var_os("RUJOCO_CORPUS").map(PathBuf::from),
-        Some(root().join("../shared/corpus")),
-    ]
-    .into_iter()
-    .flatten()
-    .find(|p| p.is_dir());
-    let mut out = Vec::new();
-    fn walk(d: &Path, out: &mut Vec<String>) {
-        let mut es: Vec<_> = std::fs::read_dir(d)
-            .into_iter()
-            .flatten()
-            .flatten()
-            .map(|e| e.path())
-            .collect();
-        es.sort();
-        for p in es {
-            if p.is_dir() {
-                walk(&p, out);
-            } else if p.extension().is_some_and(|e| e == "xml") {
-                out.push(p.to_string_lossy().into_owned());
-            }
-        }
-    }
-    if let Some(d) = dir {
-        walk(&d, &mut out);
-    }
-    out
+    corpus_files()
+        .iter()
+        .map(|p| p.to_string_lossy().into_owned())
+        .collect()
 }
 
 fn outcomes(prog: &Path, files: &[String]) -> Vec<String> {

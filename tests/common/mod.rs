@@ -184,3 +184,44 @@ pub fn model(name: &str) -> String {
         .to_string_lossy()
         .into_owned()
 }
+
+/// The corpus directories of real models: `$RUJOCO_CORPUS` (colon-separated; capi-tests/run-all
+/// sets it to ../shared/corpus or the dm_control suite, plus dm_control's and Gymnasium's other
+/// models fetched from PyPI), else ../shared/corpus when present. Canonical paths.
+pub fn corpus_dirs() -> Vec<PathBuf> {
+    let dirs: Vec<PathBuf> = match std::env::var_os("RUJOCO_CORPUS") {
+        Some(v) => std::env::split_paths(&v).collect(),
+        None => vec![root().join("../shared/corpus")],
+    };
+    dirs.into_iter()
+        .filter(|p| p.is_dir())
+        .filter_map(|p| p.canonicalize().ok())
+        .collect()
+}
+
+/// The .xml files under a directory, sorted, recursively.
+pub fn xml_files(dir: &Path, out: &mut Vec<PathBuf>) {
+    let mut entries: Vec<_> = std::fs::read_dir(dir)
+        .into_iter()
+        .flatten()
+        .flatten()
+        .map(|e| e.path())
+        .collect();
+    entries.sort();
+    for p in entries {
+        if p.is_dir() {
+            xml_files(&p, out);
+        } else if p.extension().is_some_and(|e| e == "xml") {
+            out.push(p);
+        }
+    }
+}
+
+/// Every .xml file of the corpus directories.
+pub fn corpus_files() -> Vec<PathBuf> {
+    let mut out = Vec::new();
+    for d in corpus_dirs() {
+        xml_files(&d, &mut out);
+    }
+    out
+}
