@@ -133,13 +133,16 @@ inline void dump_contacts(const mjData* d, Writer& w, const std::string& inst) {
   }
 }
 
-// Every mjData array with results (MJDATA_POINTERS) and the deterministic scalars.
-inline void dump_data(const mjModel* m, const mjData* d, Writer& w, const std::string& inst) {
+// Every mjData array with results (MJDATA_POINTERS) and the deterministic scalars; arrays of
+// more than max_count elements are left out (max_count 0: none).
+inline void dump_data(const mjModel* m, const mjData* d, Writer& w, const std::string& inst,
+                      size_t max_count = 0) {
   MJDATA_POINTERS_PREAMBLE(m)
 #define X(type, name, nr, nc)                                                                \
   if (std::strcmp(#name, "contact")) {                                                       \
     size_t c = data_count(m, d, #name, m->nr, nc);                                          \
-    w.raw(std::string(#name) + "#" + inst, type_code<type>(""), d->name, sizeof(type) * c); \
+    if (!max_count || c <= max_count)                                                        \
+      w.raw(std::string(#name) + "#" + inst, type_code<type>(""), d->name, sizeof(type) * c); \
   }
   MJDATA_POINTERS
 #undef X
