@@ -1,0 +1,68 @@
+// Simulation speed, built against each library (tests/speed.rs):
+//   bench STEPS DISABLEFLAGS FILE   loads FILE, ors DISABLEFLAGS into opt.disableflags, resets
+//   (keyframe 0 if any), and times STEPS driven mj_step calls after 100 warm-up steps; prints
+//   "steps/s <rate>", or "error <message>" when the library stops with mju_error.
+#define _POSIX_C_SOURCE 200809L
+#include <math.h>
+#include <mujoco/mujoco.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <time.h>
+
+static void on_error(const char* msg) {
+  printf("error %s\n", msg);
+  exit(0);
+}
+
+static void quiet(const char* msg) { (void)msg; }
+
+static double now(void) {
+  struct timespec t;
+  clock_gettime(CLOCK_MONOTONIC, &t);
+  return t.tv_sec + 1e-9 * t.tv_nsec;
+}
+
+static void drive(const mjModel* m, mjData* d, int s) {
+  for (int i = 0; i < m->nu; i++) {
+    mjtNum x = sin(0.01 * s * (1 + 0.3 * i) + i);
+    if (m->actuator_ctrllimited[i]) {
+      mjtNum lo = m->actuator_ctrlrange[2 * i], hi = m->actuator_ctrlrange[2 * i + 1];
+      d->ctrl[i] = lo + (hi - lo) * (0.5 + 0.45 * x);
+    } else {
+      d->ctrl[i] = x;
+    }
+  }
+}
+
+int main(int argc, char** argv) {
+  if (argc != 4) {
+    fprintf(stderr, "usage: bench STEPS DISABLEFLAGS FILE\n");
+    return 2;
+  }
+  mju_user_error = on_error;
+  mju_user_warning = quiet;  // unstable runs reset and go on in both libraries
+  int steps = atoi(argv[1]);
+  char err[1000] = "";
+  mjModel* m = mj_loadXML(argv[3], NULL, err, sizeof err);
+  if (!m) {
+    printf("error %s\n", err);
+    return 0;
+  }
+  m->opt.disableflags |= atoi(argv[2]);
+  mjData* d = mj_makeData(m);
+  if (m->nkey > 0) mj_resetDataKeyframe(m, d, 0);
+  for (int s = 0; s < 100; s++) {
+    drive(m, d, s);
+    mj_step(m, d);
+  }
+  double t0 = now();
+  for (int s = 0; s < steps; s++) {
+    drive(m, d, s);
+    mj_step(m, d);
+  }
+  double dt = now() - t0;
+  printf("steps/s %.1f\n", steps / dt);
+  mj_deleteData(d);
+  mj_deleteModel(m);
+  return 0;
+}
