@@ -24,6 +24,14 @@ unsafe fn slice_mut<'a>(p: *mut f64, n: usize) -> &'a mut [f64] {
     }
 }
 
+/// Reports a NULL model through mju_error (2.2.2 would crash): true when `m` is NULL.
+fn null_model(name: &str, m: *const mjModel) -> bool {
+    if m.is_null() {
+        errmem::error(&format!("{name}: NULL model"));
+    }
+    m.is_null()
+}
+
 unsafe fn arr3(p: *const f64) -> [f64; 3] {
     [*p, *p.add(1), *p.add(2)]
 }
@@ -493,6 +501,9 @@ pub unsafe extern "C" fn mj_solveLD(
     qLD: *const mjtNum,
     qLDiagInv: *const mjtNum,
 ) {
+    if null_model("mj_solveLD", m) {
+        return;
+    }
     guard("mj_solveLD", (), || {
         let mv = Model::new(&*m);
         let len = n.max(0) as usize * mv.raw.nv as usize;
@@ -555,6 +566,26 @@ pub unsafe extern "C" fn mj_rne(
 }
 
 /// Jacobian rows at `point` on `body`, from the raw data (the C signature has a const mjData).
+/// The object's id when it is valid (0 <= id < n), else an error through mju_error: 2.2.2
+/// reads out of bounds here, we refuse.
+unsafe fn checked_id(
+    name: &str,
+    m: *const mjModel,
+    d: *const mjData,
+    id: c_int,
+    n: impl Fn(&mjModel) -> i32,
+) -> Option<usize> {
+    if m.is_null() || d.is_null() {
+        errmem::error(&format!("{name}: NULL model or data"));
+        return None;
+    }
+    if id < 0 || id >= n(&*m) {
+        errmem::error(&format!("{name}: invalid id {id}"));
+        return None;
+    }
+    Some(id as usize)
+}
+
 unsafe fn jac_raw(
     m: *const mjModel,
     d: *const mjData,
@@ -563,6 +594,10 @@ unsafe fn jac_raw(
     point: [f64; 3],
     body: c_int,
 ) {
+    if m.is_null() || d.is_null() {
+        errmem::error("mj_jac: NULL model or data");
+        return;
+    }
     guard("mj_jac", (), || {
         let mv = Model::new(&*m);
         let (nv, nbody) = (mv.raw.nv as usize, mv.raw.nbody as usize);
@@ -598,14 +633,10 @@ pub unsafe extern "C" fn mj_jacBody(
     jacr: *mut mjtNum,
     body: c_int,
 ) {
-    jac_raw(
-        m,
-        d,
-        jacp,
-        jacr,
-        arr3((*d).xpos.add(3 * body.max(0) as usize)),
-        body,
-    )
+    let Some(i) = checked_id("mj_jacBody", m, d, body, |m| m.nbody) else {
+        return;
+    };
+    jac_raw(m, d, jacp, jacr, arr3((*d).xpos.add(3 * i)), body)
 }
 
 #[no_mangle]
@@ -616,14 +647,10 @@ pub unsafe extern "C" fn mj_jacBodyCom(
     jacr: *mut mjtNum,
     body: c_int,
 ) {
-    jac_raw(
-        m,
-        d,
-        jacp,
-        jacr,
-        arr3((*d).xipos.add(3 * body.max(0) as usize)),
-        body,
-    )
+    let Some(i) = checked_id("mj_jacBodyCom", m, d, body, |m| m.nbody) else {
+        return;
+    };
+    jac_raw(m, d, jacp, jacr, arr3((*d).xipos.add(3 * i)), body)
 }
 
 #[no_mangle]
@@ -634,7 +661,9 @@ pub unsafe extern "C" fn mj_jacGeom(
     jacr: *mut mjtNum,
     geom: c_int,
 ) {
-    let g = geom.max(0) as usize;
+    let Some(g) = checked_id("mj_jacGeom", m, d, geom, |m| m.ngeom) else {
+        return;
+    };
     jac_raw(
         m,
         d,
@@ -653,7 +682,9 @@ pub unsafe extern "C" fn mj_jacSite(
     jacr: *mut mjtNum,
     site: c_int,
 ) {
-    let s = site.max(0) as usize;
+    let Some(s) = checked_id("mj_jacSite", m, d, site, |m| m.nsite) else {
+        return;
+    };
     jac_raw(
         m,
         d,
@@ -671,6 +702,9 @@ pub unsafe extern "C" fn mj_jacSubtreeCom(
     jacp: *mut mjtNum,
     body: c_int,
 ) {
+    if checked_id("mj_jacSubtreeCom", m, d, body, |m| m.nbody).is_none() {
+        return;
+    }
     run("mj_jacSubtreeCom", (), m, d, |mv, dv| {
         let nv = mv.raw.nv as usize;
         let mut out = vec![0.0; 3 * nv];
@@ -690,6 +724,9 @@ pub unsafe extern "C" fn mj_jacPointAxis(
     axis: *const mjtNum,
     body: c_int,
 ) {
+    if checked_id("mj_jacPointAxis", m, d, body, |m| m.nbody).is_none() {
+        return;
+    }
     let (p, a) = (arr3(point), arr3(axis));
     run("mj_jacPointAxis", (), m, d, |mv, dv| {
         let nv = mv.raw.nv as usize;
@@ -701,6 +738,9 @@ pub unsafe extern "C" fn mj_jacPointAxis(
 
 #[no_mangle]
 pub unsafe extern "C" fn mj_fullM(m: *const mjModel, dst: *mut mjtNum, M: *const mjtNum) {
+    if null_model("mj_fullM", m) {
+        return;
+    }
     guard("mj_fullM", (), || {
         let mv = Model::new(&*m);
         let nv = mv.raw.nv as usize;
@@ -716,6 +756,9 @@ pub unsafe extern "C" fn mj_mulM(
     res: *mut mjtNum,
     vec: *const mjtNum,
 ) {
+    if null_model("mj_mulM", m) {
+        return;
+    }
     guard("mj_mulM", (), || {
         let mv = Model::new(&*m);
         let nv = mv.raw.nv as usize;
@@ -737,6 +780,9 @@ pub unsafe extern "C" fn mj_mulM2(
     res: *mut mjtNum,
     vec: *const mjtNum,
 ) {
+    if null_model("mj_mulM2", m) {
+        return;
+    }
     guard("mj_mulM2", (), || {
         let mv = Model::new(&*m);
         let nv = mv.raw.nv as usize;
@@ -843,6 +889,9 @@ pub unsafe extern "C" fn mj_differentiatePos(
     qpos1: *const mjtNum,
     qpos2: *const mjtNum,
 ) {
+    if null_model("mj_differentiatePos", m) {
+        return;
+    }
     guard("mj_differentiatePos", (), || {
         let mv = Model::new(&*m);
         let (nq, nv) = (mv.raw.nq as usize, mv.raw.nv as usize);
@@ -859,6 +908,9 @@ pub unsafe extern "C" fn mj_integratePos(
     qvel: *const mjtNum,
     dt: mjtNum,
 ) {
+    if null_model("mj_integratePos", m) {
+        return;
+    }
     guard("mj_integratePos", (), || {
         let mv = Model::new(&*m);
         let (nq, nv) = (mv.raw.nq as usize, mv.raw.nv as usize);
@@ -870,6 +922,9 @@ pub unsafe extern "C" fn mj_integratePos(
 
 #[no_mangle]
 pub unsafe extern "C" fn mj_normalizeQuat(m: *const mjModel, qpos: *mut mjtNum) {
+    if null_model("mj_normalizeQuat", m) {
+        return;
+    }
     guard("mj_normalizeQuat", (), || {
         let mv = Model::new(&*m);
         kinematics::normalize_quat(&mv, slice_mut(qpos, mv.raw.nq as usize));
@@ -920,6 +975,9 @@ pub unsafe extern "C" fn mj_local2Global(
 
 #[no_mangle]
 pub unsafe extern "C" fn mj_getTotalmass(m: *const mjModel) -> mjtNum {
+    if null_model("mj_getTotalmass", m) {
+        return 0.0;
+    }
     guard("mj_getTotalmass", 0.0, || {
         Ok(support::total_mass(&Model::new(&*m)))
     })
@@ -1239,16 +1297,25 @@ pub unsafe extern "C" fn mj_addContact(
 
 #[no_mangle]
 pub unsafe extern "C" fn mj_isPyramidal(m: *const mjModel) -> c_int {
+    if null_model("mj_isPyramidal", m) {
+        return 0;
+    }
     constraint::is_pyramidal(&Model::new(&*m)) as c_int
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn mj_isSparse(m: *const mjModel) -> c_int {
+    if null_model("mj_isSparse", m) {
+        return 0;
+    }
     constraint::is_sparse(&Model::new(&*m)) as c_int
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn mj_isDual(m: *const mjModel) -> c_int {
+    if null_model("mj_isDual", m) {
+        return 0;
+    }
     constraint::is_dual(&Model::new(&*m)) as c_int
 }
 
