@@ -9,7 +9,12 @@ use common::*;
 fn bad_arguments_never_crash() {
     let prog = compile_c(&[root().join("capi-tests/robust.c")], "robust", Lib::Ours);
     let mut summary = String::new();
-    for name in ["arm3.xml", "chain.xml", "freebox.xml", "extra/tendon_wrap.xml"] {
+    for name in [
+        "arm3.xml",
+        "chain.xml",
+        "freebox.xml",
+        "extra/tendon_wrap.xml",
+    ] {
         let model = common::model(name);
         let o = run(&prog, &[&model], &[], 60);
         let out = text(&o.stdout);

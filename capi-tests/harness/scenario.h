@@ -372,6 +372,21 @@ inline void check_sensors(const mjModel* m, mjData* d, const Inputs& in, Writer&
   }
 }
 
+// Collision detection alone at each state: the position stages it needs, then mj_collision;
+// the contacts (every field, in order) and the contact-buffer warning.
+inline void check_collision(const mjModel* m, mjData* d, const Inputs& in, Writer& w) {
+  for (int k = 0; k < in.nstate; k++) {
+    at_state(m, d, in, k, false);
+    mj_kinematics(m, d);
+    mj_comPos(m, d);
+    mj_collision(m, d);
+    std::string i = I(k);
+    w.i1("ncon#" + i, d->ncon);
+    dump_contacts(d, w, i);
+    w.i("warning.contactfull#" + i, &d->warning[mjWARN_CONTACTFULL].lastinfo, 2);
+  }
+}
+
 // Check groups that call nothing but the functions under test on the model (no mjData).
 inline bool needs_data(const std::string& group) {
   return group != "names" && group != "integratePos" && group != "differentiatePos";
@@ -399,6 +414,7 @@ inline std::vector<std::pair<std::string, Check>> state_checks() {
       {"inverse", check_inverse},
       {"objects", check_objects},
       {"sensors", check_sensors},
+      {"collision", check_collision},
   };
 }
 

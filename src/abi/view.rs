@@ -94,6 +94,17 @@ macro_rules! data_views {
 }
 mjdata_pointers!(data_views);
 
+impl Data<'_> {
+    /// Runs `f` with this data and a scratch arena scope taken from its stack; everything `f`
+    /// allocates is released afterwards (mjMARKSTACK / mjFREESTACK).
+    pub fn with_scratch<R>(&mut self, f: impl FnOnce(&mut Self, &mut Arena) -> R) -> R {
+        let mut arena = std::mem::replace(&mut self.arena, Arena::over(&mut []));
+        let r = arena.scope(|a| f(self, a));
+        self.arena = arena;
+        r
+    }
+}
+
 impl Drop for Data<'_> {
     fn drop(&mut self) {
         let peak = self.arena.peak as i32;

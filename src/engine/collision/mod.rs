@@ -1,36 +1,27 @@
-//! Collision detection, up to the narrow phase: candidate geom pairs are filtered exactly as
-//! 2.2.2 does (contype/conaffinity, weld and parent exclusion, excludes, explicit pairs,
-//! bounding spheres with margin). Any pair that survives would need a narrow-phase routine,
-//! which this slice does not have yet: that is reported as not implemented.
+//! Collision detection (mj_collision): the broad phase proposes body pairs, geom pairs are
+//! filtered (contype/conaffinity, weld and parent exclusion, excludes, explicit pairs, bounding
+//! spheres with margin), the narrow-phase routine of the type pair finds contacts, and their
+//! parameters are mixed from the two geoms (or taken from the explicit pair).
 
-use crate::engine::linalg::{max, row};
+use crate::engine::linalg::row;
 
 pub mod boxes;
+pub mod broadphase;
 pub mod convex;
 pub mod mpr;
+pub mod narrow;
 pub mod primitive;
 #[cfg(test)]
 mod tests;
 use crate::abi::*;
+use crate::engine::support::warning;
 use crate::engine::{disabled, enabled, Data, EngineError, Model};
+use crate::math::spatial::make_frame;
 use crate::math::*;
+use primitive::ContactGeom;
 
-const TYPE_NAMES: [&str; 8] = [
-    "plane",
-    "hfield",
-    "sphere",
-    "capsule",
-    "ellipsoid",
-    "cylinder",
-    "box",
-    "mesh",
-];
-
-/// Does 2.2.2 have a collision routine for these (ordered) geom types?
-fn has_collider(t1: i32, t2: i32) -> bool {
-    // plane and hfield never collide with each other or themselves
-    !(t1 <= 1 && t2 <= 1)
-}
+/// Smallest friction coefficient of a contact (mjMINMU).
+const MINMU: f64 = 1e-5;
 
 fn assign_margin(m: &Model, margin: f64) -> f64 {
     if enabled(m, mjtEnableBit_::mjENBL_OVERRIDE) {
@@ -40,80 +31,234 @@ fn assign_margin(m: &Model, margin: f64) -> f64 {
     }
 }
 
+/// Distance of geom g's centre above the plane geom's surface.
 fn plane_dist(d: &Data, plane: usize, g: usize) -> f64 {
     let mat = row::<9>(d.geom_xmat, plane);
-    let dif = sub3(&row(d.geom_xpos, g), &row(d.geom_xpos, plane));
-    dot3(&dif, &[mat[2], mat[5], mat[8]])
+    let dif = vec3::sub3(&row(d.geom_xpos, g), &row(d.geom_xpos, plane));
+    vec3::dot3(&dif, &[mat[2], mat[5], mat[8]])
 }
 
-/// Runs the filters of mj_collideGeoms; Err when the pair reaches the narrow phase.
-fn test_pair(
+/// Built-in filter of dynamic pairs (mj_contactFilter): true discards.
+fn filtered(m: &Model, g1: usize, g2: usize) -> bool {
+    let weld = |g: usize| m.body_weldid()[m.geom_bodyid()[g] as usize];
+    let (w1, w2) = (weld(g1), weld(g2));
+    let wparent = |w: i32| m.body_weldid()[m.body_parentid()[w as usize] as usize];
+    let (ct1, ca1) = (m.geom_contype()[g1], m.geom_conaffinity()[g1]);
+    let (ct2, ca2) = (m.geom_contype()[g2], m.geom_conaffinity()[g2]);
+    if ct1 & ca2 == 0 && ct2 & ca1 == 0 {
+        return true;
+    }
+    if w1 == w2 {
+        return true;
+    }
+    let filterparent = !disabled(m, mjtDisableBit_::mjDSBL_FILTERPARENT) && w1 != 0 && w2 != 0;
+    filterparent && (w1 == wparent(w2) || w2 == wparent(w1))
+}
+
+/// Contact parameters of a geom pair: condim, friction (5), solref, solimp, margin, gap.
+struct Params {
+    condim: i32,
+    friction: [f64; 5],
+    solref: [f64; mjNREF],
+    solimp: [f64; mjNIMP],
+}
+
+/// Mixes the parameters of two geoms (dynamic pairs): by priority, else max/solmix.
+fn mixed(m: &Model, g1: usize, g2: usize) -> Params {
+    let (p1, p2) = (m.geom_priority()[g1], m.geom_priority()[g2]);
+    let mut friction = [0.0; 5];
+    let (mut solref, mut solimp) = ([0.0; mjNREF], [0.0; mjNIMP]);
+    let condim;
+    if p1 != p2 {
+        let gp = if p1 > p2 { g1 } else { g2 };
+        condim = m.geom_condim()[gp];
+        for i in 0..3 {
+            friction[2 * i] = m.geom_friction()[3 * gp + i];
+        }
+        solref.copy_from_slice(&m.geom_solref()[mjNREF * gp..mjNREF * (gp + 1)]);
+        solimp.copy_from_slice(&m.geom_solimp()[mjNIMP * gp..mjNIMP * (gp + 1)]);
+    } else {
+        condim = m.geom_condim()[g1].max(m.geom_condim()[g2]);
+        for i in 0..3 {
+            friction[2 * i] = m.geom_friction()[3 * g1 + i].max(m.geom_friction()[3 * g2 + i]);
+        }
+        let (s1, s2) = (m.geom_solmix()[g1], m.geom_solmix()[g2]);
+        let mix = if s1 >= MINVAL && s2 >= MINVAL {
+            s1 / (s1 + s2)
+        } else if s1 < MINVAL && s2 < MINVAL {
+            0.5
+        } else if s1 < MINVAL {
+            0.0
+        } else {
+            1.0
+        };
+        let (r1, r2) = (
+            &m.geom_solref()[mjNREF * g1..mjNREF * (g1 + 1)],
+            &m.geom_solref()[mjNREF * g2..mjNREF * (g2 + 1)],
+        );
+        for i in 0..mjNREF {
+            solref[i] = if r1[0] > 0.0 && r2[0] > 0.0 {
+                mix * r1[i] + (1.0 - mix) * r2[i]
+            } else {
+                r1[i].min(r2[i])
+            };
+        }
+        for i in 0..mjNIMP {
+            solimp[i] = m.geom_solimp()[mjNIMP * g1 + i] * mix;
+            solimp[i] += m.geom_solimp()[mjNIMP * g2 + i] * (1.0 - mix);
+        }
+    }
+    friction[1] = friction[0];
+    friction[3] = friction[4];
+    Params {
+        condim,
+        friction,
+        solref,
+        solimp,
+    }
+}
+
+fn pair_params(m: &Model, p: usize) -> Params {
+    let mut friction = [0.0; 5];
+    friction.copy_from_slice(&m.pair_friction()[5 * p..5 * p + 5]);
+    let (mut solref, mut solimp) = ([0.0; mjNREF], [0.0; mjNIMP]);
+    solref.copy_from_slice(&m.pair_solref()[mjNREF * p..mjNREF * (p + 1)]);
+    solimp.copy_from_slice(&m.pair_solimp()[mjNIMP * p..mjNIMP * (p + 1)]);
+    Params {
+        condim: m.pair_dim()[p],
+        friction,
+        solref,
+        solimp,
+    }
+}
+
+/// Removes box-box contacts at a position a later contact repeats (2.2.2 keeps the last).
+fn dedup_box_box(con: &mut [ContactGeom], n: usize) -> usize {
+    let mut keep = [true; narrow::MAX_CONTACT_PAIR];
+    for i in 0..n.saturating_sub(1) {
+        if (i + 1..n).any(|j| con[i].pos == con[j].pos) {
+            keep[i] = false;
+        }
+    }
+    let mut k = 0;
+    for j in 0..n {
+        if keep[j] {
+            con[k] = con[j];
+            k += 1;
+        }
+    }
+    k
+}
+
+/// Tests one geom pair (mj_collideGeoms): `pair` is the explicit pair's index, if any.
+/// Returns Ok(false) when the contact buffer is full (2.2.2 stops adding then).
+fn collide_geoms(
     m: &Model,
-    d: &Data,
+    d: &mut Data,
     g1: usize,
     g2: usize,
     pair: Option<usize>,
-) -> Result<(), EngineError> {
+) -> Result<bool, EngineError> {
     let (g1, g2) = if m.geom_type()[g1] > m.geom_type()[g2] {
         (g2, g1)
     } else {
         (g1, g2)
     };
     let (t1, t2) = (m.geom_type()[g1], m.geom_type()[g2]);
-    if !has_collider(t1, t2) {
-        return Ok(());
+    if !narrow::has_collider(t1, t2) {
+        return Ok(true);
     }
-    let margin = match pair {
-        None => {
-            let weld1 = m.body_weldid()[m.geom_bodyid()[g1] as usize];
-            let weld2 = m.body_weldid()[m.geom_bodyid()[g2] as usize];
-            let wparent1 = m.body_weldid()[m.body_parentid()[weld1 as usize] as usize];
-            let wparent2 = m.body_weldid()[m.body_parentid()[weld2 as usize] as usize];
-            let filterparent =
-                !disabled(m, mjtDisableBit_::mjDSBL_FILTERPARENT) && weld1 != 0 && weld2 != 0;
-            let (ct1, ca1) = (m.geom_contype()[g1], m.geom_conaffinity()[g1]);
-            let (ct2, ca2) = (m.geom_contype()[g2], m.geom_conaffinity()[g2]);
-            if (ct1 & ca2) == 0 && (ct2 & ca1) == 0 {
-                return Ok(());
-            }
-            if weld1 == weld2 {
-                return Ok(());
-            }
-            if filterparent && (weld1 == wparent2 || weld2 == wparent1) {
-                return Ok(());
-            }
-            max(m.geom_margin()[g1], m.geom_margin()[g2])
-        }
-        Some(p) => m.pair_margin()[p],
+    if pair.is_none() && filtered(m, g1, g2) {
+        return Ok(true);
+    }
+    let (margin, gap) = match pair {
+        None => (
+            m.geom_margin()[g1].max(m.geom_margin()[g2]),
+            m.geom_gap()[g1].max(m.geom_gap()[g2]),
+        ),
+        Some(p) => (m.pair_margin()[p], m.pair_gap()[p]),
     };
     let margin = assign_margin(m, margin);
     let (r1, r2) = (m.geom_rbound()[g1], m.geom_rbound()[g2]);
     if r1 > 0.0
         && r2 > 0.0
-        && dist3(&row(d.geom_xpos, g1), &row(d.geom_xpos, g2)) > r1 + r2 + margin
+        && vec3::dist3(&row(d.geom_xpos, g1), &row(d.geom_xpos, g2)) > r1 + r2 + margin
     {
-        return Ok(());
+        return Ok(true);
     }
     let plane = mjtGeom_::mjGEOM_PLANE as i32;
     if t1 == plane && r2 > 0.0 && plane_dist(d, g1, g2) > margin + r2 {
-        return Ok(());
+        return Ok(true);
     }
     if t2 == plane && r1 > 0.0 && plane_dist(d, g2, g1) > margin + r1 {
-        return Ok(());
+        return Ok(true);
     }
-    let name = |t: i32| TYPE_NAMES.get(t as usize).copied().unwrap_or("unknown");
-    Err(EngineError(format!(
-        "collision between {} and {} geoms is not implemented",
-        name(t1),
-        name(t2)
-    )))
+
+    let mut con = [ContactGeom::default(); narrow::MAX_CONTACT_PAIR];
+    let mut n = narrow::collide(m, d, g1, g2, margin, &mut con);
+    if n == 0 {
+        return Ok(true);
+    }
+    let boxed = mjtGeom_::mjGEOM_BOX as i32;
+    if t1 == boxed && t2 == boxed {
+        n = dedup_box_box(&mut con, n);
+    }
+    let mut p = match pair {
+        None => mixed(m, g1, g2),
+        Some(p) => pair_params(m, p),
+    };
+    for f in &mut p.friction {
+        *f = f.max(MINMU);
+    }
+    if enabled(m, mjtEnableBit_::mjENBL_OVERRIDE) {
+        p.solref = m.raw.opt.o_solref;
+        p.solimp = m.raw.opt.o_solimp;
+    }
+    if !(1..=6).contains(&p.condim) {
+        return Err(EngineError(format!("Invalid condim value: {}", n - 1)));
+    }
+    for c in &con[..n] {
+        let mut frame = [0.0; 9];
+        frame[..6].copy_from_slice(&c.frame);
+        let frame = make_frame(&frame)
+            .ok_or_else(|| EngineError("mju_makeFrame: xaxis must be a unit vector".into()))?;
+        let includemargin = margin - gap;
+        let contact = mjContact {
+            dist: c.dist,
+            pos: c.pos,
+            frame,
+            includemargin,
+            friction: p.friction,
+            solref: p.solref,
+            solimp: p.solimp,
+            mu: 0.0,
+            H: [0.0; 36],
+            dim: p.condim,
+            geom1: g1 as i32,
+            geom2: g2 as i32,
+            exclude: (c.dist >= includemargin) as i32,
+            efc_address: -1,
+        };
+        if !add_contact(m, d, contact)? {
+            return Ok(false);
+        }
+    }
+    Ok(true)
 }
 
-fn can_collide(m: &Model, g: usize) -> bool {
-    m.geom_contype()[g] != 0 || m.geom_conaffinity()[g] != 0
+/// Appends a contact (mj_addContact); false with the buffer-full warning when there is no room.
+fn add_contact(m: &Model, d: &mut Data, con: mjContact) -> Result<bool, EngineError> {
+    let n = d.raw.ncon.max(0) as usize;
+    if n >= m.raw.nconmax.max(0) as usize {
+        warning(d.raw, mjtWarning_::mjWARN_CONTACTFULL as i32, m.raw.nconmax)?;
+        return Ok(false);
+    }
+    d.contact[n] = con;
+    d.raw.ncon += 1;
+    Ok(true)
 }
 
-/// mj_collision: ncon = 0, or an error when a contact could occur.
+/// mj_collision: fills d.contact and d.ncon.
 pub fn collision(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     d.raw.ncon = 0;
     let nbody = m.raw.nbody as usize;
@@ -124,53 +269,69 @@ pub fn collision(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     {
         return Ok(());
     }
-    let mode = m.raw.opt.collision;
-    let dynamic_only = mode == mjtCollision_::mjCOL_DYNAMIC as i32;
-    let pair_only = mode == mjtCollision_::mjCOL_PAIR as i32;
-    if !dynamic_only {
-        for p in 0..m.raw.npair as usize {
-            test_pair(
-                m,
-                d,
-                m.pair_geom1()[p] as usize,
-                m.pair_geom2()[p] as usize,
-                Some(p),
-            )?;
+    let npair = m.raw.npair.max(0) as usize;
+    if m.raw.opt.collision == mjtCollision_::mjCOL_PAIR as i32 {
+        for p in 0..npair {
+            let (g1, g2) = (m.pair_geom1()[p] as usize, m.pair_geom2()[p] as usize);
+            collide_geoms(m, d, g1, g2, Some(p))?;
         }
-    }
-    if pair_only {
         return Ok(());
     }
-    let ngeom = m.raw.ngeom as usize;
-    for g1 in 0..ngeom {
-        if !can_collide(m, g1) {
-            continue;
+    let merge = npair > 0 && m.raw.opt.collision == mjtCollision_::mjCOL_ALL as i32;
+    d.with_scratch(|d, a| -> Result<(), EngineError> {
+        let pairs = broadphase::broadphase(m, d, a)?;
+        let nexclude = m.raw.nexclude.max(0) as usize;
+        let (mut pairadr, mut exadr) = (0usize, 0usize);
+        for &bp in pairs.iter() {
+            let (b1, b2) = (((bp >> 16) & 0xFFFF) as usize, (bp & 0xFFFF) as usize);
+            let signature = (((b1 + 1) << 16) + b2 + 1) as i32;
+            let start = pairadr;
+            let mut merged = false;
+            if merge {
+                while pairadr < npair && m.pair_signature()[pairadr] <= signature {
+                    merged |= m.pair_signature()[pairadr] == signature;
+                    let (g1, g2) = (
+                        m.pair_geom1()[pairadr] as usize,
+                        m.pair_geom2()[pairadr] as usize,
+                    );
+                    collide_geoms(m, d, g1, g2, Some(pairadr))?;
+                    pairadr += 1;
+                }
+            }
+            while exadr < nexclude && m.exclude_signature()[exadr] < signature {
+                exadr += 1;
+            }
+            if exadr < nexclude && m.exclude_signature()[exadr] == signature {
+                continue;
+            }
+            let (n1, n2) = (m.body_geomnum()[b1], m.body_geomnum()[b2]);
+            if n1 == 0 || n2 == 0 {
+                continue;
+            }
+            let (a1, a2) = (m.body_geomadr()[b1] as usize, m.body_geomadr()[b2] as usize);
+            for g1 in a1..a1 + n1 as usize {
+                for g2 in a2..a2 + n2 as usize {
+                    let listed = merged
+                        && (start..pairadr).any(|k| {
+                            let (p1, p2) = (m.pair_geom1()[k] as usize, m.pair_geom2()[k] as usize);
+                            (p1 == g1 && p2 == g2) || (p1 == g2 && p2 == g1)
+                        });
+                    if !listed {
+                        collide_geoms(m, d, g1, g2, None)?;
+                    }
+                }
+            }
         }
-        for g2 in g1 + 1..ngeom {
-            if !can_collide(m, g2) {
-                continue;
+        if merge {
+            while pairadr < npair {
+                let (g1, g2) = (
+                    m.pair_geom1()[pairadr] as usize,
+                    m.pair_geom2()[pairadr] as usize,
+                );
+                collide_geoms(m, d, g1, g2, Some(pairadr))?;
+                pairadr += 1;
             }
-            let (b1, b2) = (m.geom_bodyid()[g1], m.geom_bodyid()[g2]);
-            if b1 == b2 {
-                continue;
-            }
-            let (lo, hi) = if b1 < b2 { (b1, b2) } else { (b2, b1) };
-            let signature = ((lo + 1) << 16) + (hi + 1);
-            if m.exclude_signature().contains(&signature) {
-                continue;
-            }
-            let merged = !dynamic_only
-                && (0..m.raw.npair as usize).any(|p| {
-                    m.pair_signature()[p] == signature
-                        && ((m.pair_geom1()[p] as usize == g1 && m.pair_geom2()[p] as usize == g2)
-                            || (m.pair_geom1()[p] as usize == g2
-                                && m.pair_geom2()[p] as usize == g1))
-                });
-            if merged {
-                continue;
-            }
-            test_pair(m, d, g1, g2, None)?;
         }
-    }
-    Ok(())
+        Ok(())
+    })
 }

@@ -1,0 +1,246 @@
+//! Broad phase (mj_broadphase): candidate body pairs. Bodies that carry geoms of the world, or
+//! planes and height fields welded to it, pair with every body; the others are swept and pruned
+//! along the principal axes of the geom centres. Pairs come out sorted by signature
+//! (`(b1 << 16) + b2`, b1 < b2), duplicates included, as in 2.2.2.
+
+use crate::abi::mjtGeom_;
+use crate::abi::view::Arena;
+use crate::engine::linalg::row;
+use crate::engine::{Data, EngineError, Model};
+use crate::math::eig3::eig3;
+use crate::math::vec3::{dot3, sub3};
+use crate::math::Mat3;
+
+/// Does the body have a geom with contype or conaffinity?
+pub fn can_collide(m: &Model, b: usize) -> bool {
+    let adr = m.body_geomadr()[b].max(0) as usize;
+    (adr..adr + m.body_geomnum()[b].max(0) as usize)
+        .any(|g| m.geom_contype()[g] != 0 || m.geom_conaffinity()[g] != 0)
+}
+
+fn has_plane_or_hfield(m: &Model, b: usize) -> bool {
+    let adr = m.body_geomadr()[b].max(0) as usize;
+    (adr..adr + m.body_geomnum()[b].max(0) as usize).any(|g| {
+        let t = m.geom_type()[g];
+        t == mjtGeom_::mjGEOM_PLANE as i32 || t == mjtGeom_::mjGEOM_HFIELD as i32
+    })
+}
+
+/// The pair list under construction (capacity nbody*(nbody-1)/2, as 2.2.2's buffer).
+struct Pairs<'a> {
+    pair: &'a mut [i32],
+    n: usize,
+}
+
+impl Pairs<'_> {
+    /// Adds a body pair; with `filter`, single-geom bodies must pass contype/conaffinity.
+    fn add(&mut self, m: &Model, filter: bool, b1: usize, b2: usize) -> Result<(), EngineError> {
+        if self.n >= self.pair.len() {
+            return Err(EngineError("Broadphase buffer full".into()));
+        }
+        if filter && m.body_geomnum()[b1] == 1 && m.body_geomnum()[b2] == 1 {
+            let (g1, g2) = (m.body_geomadr()[b1] as usize, m.body_geomadr()[b2] as usize);
+            if m.geom_contype()[g1] & m.geom_conaffinity()[g2] == 0
+                && m.geom_contype()[g2] & m.geom_conaffinity()[g1] == 0
+            {
+                return Ok(());
+            }
+        }
+        let (lo, hi) = if b1 < b2 { (b1, b2) } else { (b2, b1) };
+        self.pair[self.n] = ((lo << 16) + hi) as i32;
+        self.n += 1;
+        Ok(())
+    }
+}
+
+/// Stable top-down merge sort of `items` by `less_eq` (glibc's qsort_r, which 2.2.2 calls, is
+/// this merge sort: ties and even inconsistent comparisons come out the same).
+pub fn merge_sort<T: Copy>(items: &mut [T], tmp: &mut [T], le: &impl Fn(&T, &T) -> bool) {
+    let n = items.len();
+    if n <= 1 {
+        return;
+    }
+    let n1 = n / 2;
+    {
+        let (a, b) = items.split_at_mut(n1);
+        merge_sort(a, tmp, le);
+        merge_sort(b, tmp, le);
+    }
+    let (mut i, mut j, mut k) = (0, n1, 0);
+    while i < n1 && j < n {
+        if le(&items[i], &items[j]) {
+            tmp[k] = items[i];
+            i += 1;
+        } else {
+            tmp[k] = items[j];
+            j += 1;
+        }
+        k += 1;
+    }
+    while i < n1 {
+        tmp[k] = items[i];
+        i += 1;
+        k += 1;
+    }
+    items[..k].copy_from_slice(&tmp[..k]);
+}
+
+/// Bounding box of a body's geoms (with margins) along the rows of `frame`: (min, max) per axis.
+fn body_aabb(m: &Model, d: &Data, b: usize, frame: &Mat3) -> [f64; 6] {
+    let mut aabb = [0.0; 6];
+    let adr = m.body_geomadr()[b].max(0) as usize;
+    for (i, g) in (adr..adr + m.body_geomnum()[b].max(0) as usize).enumerate() {
+        let pos = row::<3>(d.geom_xpos, g);
+        let r = m.geom_rbound()[g] + m.geom_margin()[g];
+        for j in 0..3 {
+            let axis = [frame[3 * j], frame[3 * j + 1], frame[3 * j + 2]];
+            let c = dot3(&pos, &axis);
+            let (lo, hi) = (c - r, c + r);
+            if i == 0 {
+                aabb[2 * j] = lo;
+                aabb[2 * j + 1] = hi;
+            } else {
+                aabb[2 * j] = aabb[2 * j].min(lo);
+                aabb[2 * j + 1] = aabb[2 * j + 1].max(hi);
+            }
+        }
+    }
+    aabb
+}
+
+/// Principal axes of the non-world geom centres (rows), or None without such geoms.
+fn principal_frame(m: &Model, d: &Data) -> Option<Mat3> {
+    let ngeom = m.raw.ngeom as usize;
+    let mut cen = [0.0; 3];
+    let mut cnt = 0usize;
+    for g in (0..ngeom).filter(|&g| m.geom_bodyid()[g] != 0) {
+        let p = row::<3>(d.geom_xpos, g);
+        for k in 0..3 {
+            cen[k] += p[k];
+        }
+        cnt += 1;
+    }
+    if cnt == 0 {
+        return None;
+    }
+    for c in &mut cen {
+        *c /= cnt as f64;
+    }
+    let mut cov = [0.0; 9];
+    for g in (0..ngeom).filter(|&g| m.geom_bodyid()[g] != 0) {
+        let dif = sub3(&row::<3>(d.geom_xpos, g), &cen);
+        let (d00, d01, d02) = (dif[0] * dif[0], dif[0] * dif[1], dif[0] * dif[2]);
+        let (d11, d12, d22) = (dif[1] * dif[1], dif[1] * dif[2], dif[2] * dif[2]);
+        for (c, v) in cov
+            .iter_mut()
+            .zip([d00, d01, d02, d01, d11, d12, d02, d12, d22])
+        {
+            *c += v;
+        }
+    }
+    for c in &mut cov {
+        *c /= cnt as f64;
+    }
+    Some(eig3(&cov).eigvec)
+}
+
+/// Candidate body pairs into `pair` (from the arena), sorted by signature; returns their count.
+pub fn broadphase<'a>(
+    m: &Model,
+    d: &Data,
+    a: &mut Arena<'a>,
+) -> Result<&'a mut [i32], EngineError> {
+    let nbody = m.raw.nbody as usize;
+    let maxpair = nbody * (nbody - 1) / 2;
+    let mut pairs = Pairs {
+        pair: a.alloc_int(maxpair)?,
+        n: 0,
+    };
+
+    // the world's geoms, and planes or height fields welded to it, meet every body
+    for b1 in (0..nbody).filter(|&b| can_collide(m, b)) {
+        let all = (b1 == 0 && m.body_geomnum()[0] > 0)
+            || (m.body_weldid()[b1] == 0 && has_plane_or_hfield(m, b1));
+        if all {
+            for b2 in (0..nbody).filter(|&b2| b2 != b1) {
+                pairs.add(m, false, b1, b2)?;
+            }
+        }
+    }
+
+    if let Some(frame) = principal_frame(m, d) {
+        sweep_and_prune(m, d, a, &frame, &mut pairs)?;
+    }
+
+    let n = pairs.n;
+    let tmp = a.alloc_int(n)?;
+    merge_sort(&mut pairs.pair[..n], tmp, &|x, y| x <= y);
+    Ok(&mut pairs.pair[..n])
+}
+
+/// Sweep along the first axis (f32 keys, as 2.2.2), pruning by the other two.
+fn sweep_and_prune(
+    m: &Model,
+    d: &Data,
+    a: &mut Arena,
+    frame: &Mat3,
+    pairs: &mut Pairs,
+) -> Result<(), EngineError> {
+    let nbody = m.raw.nbody as usize;
+    let aabb = a.alloc(6 * nbody)?;
+    let mut count = 0;
+    for b in 1..nbody {
+        aabb[6 * b..6 * b + 6].copy_from_slice(&body_aabb(m, d, b, frame));
+        count += can_collide(m, b) as usize;
+    }
+    if count == 0 {
+        return Ok(());
+    }
+    const MAX: i32 = 0x10000;
+    // entries: body (+MAX for a box's upper end), keyed by its f32 bound on axis 0
+    let entries = a.alloc_int(2 * count)?;
+    let keys = a.alloc(nbody * 2)?;
+    let mut j = 0;
+    for b in (1..nbody).filter(|&b| can_collide(m, b)) {
+        keys[2 * b] = aabb[6 * b] as f32 as f64;
+        keys[2 * b + 1] = aabb[6 * b + 1] as f32 as f64;
+        entries[2 * j] = b as i32;
+        entries[2 * j + 1] = b as i32 + MAX;
+        j += 1;
+    }
+    let key = |e: &i32| -> f64 {
+        let b = (e & 0xFFFF) as usize;
+        keys[2 * b + (e & MAX != 0) as usize]
+    };
+    let tmp = a.alloc_int(2 * count)?;
+    // 2.2.2's comparison: less -> -1, equal -> 0, else (also NaN) -> 1
+    merge_sort(entries, tmp, &|x, y| {
+        let (kx, ky) = (key(x), key(y));
+        kx < ky || kx == ky
+    });
+
+    let active = a.alloc_int(2 * count)?;
+    let mut nactive = 0;
+    for &e in entries.iter() {
+        if e & MAX == 0 {
+            let b2 = e as usize;
+            for &b1 in &active[..nactive] {
+                let b1 = b1 as usize;
+                let (p, q) = (&aabb[6 * b1..6 * b1 + 6], &aabb[6 * b2..6 * b2 + 6]);
+                if p[2] > q[3] || p[3] < q[2] || p[4] > q[5] || p[5] < q[4] {
+                    continue;
+                }
+                pairs.add(m, true, b1, b2)?;
+            }
+            active[nactive] = e;
+            nactive += 1;
+        } else {
+            let remove = e & 0xFFFF;
+            if let Some(k) = active[..nactive].iter().position(|&x| x == remove) {
+                active.copy_within(k + 1..nactive, k);
+                nactive -= 1;
+            }
+        }
+    }
+    Ok(())
+}
