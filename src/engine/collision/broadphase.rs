@@ -200,24 +200,19 @@ fn sweep_and_prune(
     // entries: body (+MAX for a box's upper end), keyed by its f32 bound on axis 0
     let entries = a.alloc_int(2 * count)?;
     let keys = a.alloc(nbody * 2)?;
-    let mut j = 0;
-    for b in (1..nbody).filter(|&b| can_collide(m, b)) {
+    for (j, b) in (1..nbody).filter(|&b| can_collide(m, b)).enumerate() {
         keys[2 * b] = aabb[6 * b] as f32 as f64;
         keys[2 * b + 1] = aabb[6 * b + 1] as f32 as f64;
         entries[2 * j] = b as i32;
         entries[2 * j + 1] = b as i32 + MAX;
-        j += 1;
     }
     let key = |e: &i32| -> f64 {
         let b = (e & 0xFFFF) as usize;
         keys[2 * b + (e & MAX != 0) as usize]
     };
     let tmp = a.alloc_int(2 * count)?;
-    // 2.2.2's comparison: less -> -1, equal -> 0, else (also NaN) -> 1
-    merge_sort(entries, tmp, &|x, y| {
-        let (kx, ky) = (key(x), key(y));
-        kx < ky || kx == ky
-    });
+    // 2.2.2's comparison: less -> -1, equal -> 0, else (also NaN) -> 1; merged first if <= 0
+    merge_sort(entries, tmp, &|x, y| key(x) <= key(y));
 
     let active = a.alloc_int(2 * count)?;
     let mut nactive = 0;
