@@ -1,8 +1,7 @@
 //! Constraint instantiation, dense or sparse Jacobian: equality (connect, weld, joint, tendon),
 //! dof and tendon friction, joint and tendon limit rows; their soft-constraint parameters
 //! (diagApprox, impedance, KBIP, R, D), the reference acceleration, the projection AR for dual
-//! solvers, and the constraint-state update of the primal cost. Contact rows are reported as
-//! not implemented.
+//! solvers, and the constraint-state update of the primal cost. Contact rows: see contact.rs.
 
 use super::inertia::solve_m2;
 use super::jacdif::{merge_chain, merge_chain_simple};
@@ -154,7 +153,7 @@ pub fn mul_jac_t_vec(
 /// sparse rows `size` x chain.len() over the dofs in `chain`. Returns false when the buffer is
 /// full (warning issued).
 #[allow(clippy::too_many_arguments)]
-fn add_rows(
+pub(super) fn add_rows(
     m: &Model,
     d: &mut Data,
     jacobian: &[f64],
@@ -172,8 +171,10 @@ fn add_rows(
         warning(d.raw, mjtWarning_::mjWARN_CNSTRFULL as i32, m.raw.njmax)?;
         return Ok(false);
     }
+    // contact rows are never skipped as empty
+    let contact = super::contact::is_contact(kind);
     if !is_sparse(m) {
-        if jacobian[..size * nv].iter().all(|&x| x == 0.0) {
+        if !contact && jacobian[..size * nv].iter().all(|&x| x == 0.0) {
             return Ok(true);
         }
         d.efc_J[nefc * nv..(nefc + size) * nv].copy_from_slice(&jacobian[..size * nv]);
@@ -194,7 +195,7 @@ fn add_rows(
             d.efc_J_colind[adr..adr + n].copy_from_slice(chain);
             d.efc_J[adr..adr + n].copy_from_slice(&jacobian[(i - nefc) * n..(i - nefc + 1) * n]);
         }
-        if n == 0 {
+        if n == 0 && !contact {
             return Ok(true);
         }
     }
@@ -302,7 +303,7 @@ fn jac_sparse_simple(
 /// Jacobian of (b2, pos2) minus that of (b1, pos1) (mj_jacDifPair): translation in
 /// jacdif[..3n], rotation (when `rot`) in jacdif[3nv..3nv+3n]; returns n (nv when dense).
 #[allow(clippy::too_many_arguments)]
-fn jac_dif_pair(
+pub(super) fn jac_dif_pair(
     m: &Model,
     d: &Data,
     chain: &mut [i32],
@@ -675,12 +676,18 @@ fn limits(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> {
     Ok(())
 }
 
-/// Approximate inverse inertia of each row (mj_diagApprox) for the non-contact types.
+/// Approximate inverse inertia of each row (mj_diagApprox).
 fn diag_approx(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     let iw = m.body_invweight0();
     let dw = m.dof_invweight0();
     let tw = m.tendon_invweight0();
-    for i in 0..d.raw.nefc as usize {
+    let nefc = d.raw.nefc as usize;
+    let mut i = 0;
+    while i < nefc {
+        if super::contact::is_contact(d.efc_type[i]) {
+            i += super::contact::diag_approx(m, d, i);
+            continue;
+        }
         let id = d.efc_id[i] as usize;
         d.efc_diagApprox[i] = match d.efc_type[i] {
             EQUALITY => match m.eq_type()[id] {
@@ -713,6 +720,7 @@ fn diag_approx(m: &Model, d: &mut Data) -> Result<(), EngineError> {
             FRICTION_TENDON | LIMIT_TENDON => tw[id],
             _ => return Err(not_implemented("this constraint type is")),
         };
+        i += 1;
     }
     Ok(())
 }
@@ -720,15 +728,25 @@ fn diag_approx(m: &Model, d: &mut Data) -> Result<(), EngineError> {
 /// solref and solimp of row i after the safety adjustments.
 fn sol_params(m: &Model, d: &Data, i: usize) -> ([f64; 2], [f64; 5]) {
     let id = d.efc_id[i] as usize;
+    let contact;
     let (sr, si) = match d.efc_type[i] {
+        t if super::contact::is_contact(t) => {
+            contact = (d.contact[id].solref, d.contact[id].solimp);
+            (&contact.0[..], &contact.1[..])
+        }
         EQUALITY => (m.eq_solref(), m.eq_solimp()),
         LIMIT_JOINT => (m.jnt_solref(), m.jnt_solimp()),
         FRICTION_DOF => (m.dof_solref(), m.dof_solimp()),
         LIMIT_TENDON => (m.tendon_solref_lim(), m.tendon_solimp_lim()),
         _ => (m.tendon_solref_fri(), m.tendon_solimp_fri()),
     };
-    let mut solref: [f64; 2] = arr(&sr[2 * id..]);
-    let mut solimp: [f64; 5] = arr(&si[5 * id..]);
+    let k = if super::contact::is_contact(d.efc_type[i]) {
+        0
+    } else {
+        id
+    };
+    let mut solref: [f64; 2] = arr(&sr[2 * k..]);
+    let mut solimp: [f64; 5] = arr(&si[5 * k..]);
     if (solref[0] > 0.0) ^ (solref[1] > 0.0) {
         crate::capi::errmem::warning("mixed solref format, replacing with default");
         solref = [0.02, 1.0];
@@ -780,6 +798,9 @@ fn impedance(solimp: &[f64; 5], pos: f64, margin: f64) -> (f64, f64) {
 /// Distance used for the impedance of the constraint starting at row i, and its row count.
 fn pos_dim(m: &Model, d: &Data, i: usize) -> (f64, usize) {
     let id = d.efc_id[i] as usize;
+    if super::contact::is_contact(d.efc_type[i]) {
+        return (d.efc_pos[i], super::contact::rows(d, i));
+    }
     if d.efc_type[i] == EQUALITY {
         match m.eq_type()[id] {
             EQ_WELD => {
@@ -798,7 +819,7 @@ fn pos_dim(m: &Model, d: &Data, i: usize) -> (f64, usize) {
     (d.efc_pos[i], 1)
 }
 
-/// efc_R, efc_D, efc_KBIP and the adjusted efc_diagApprox (mj_makeImpedance), no contacts.
+/// efc_R, efc_D, efc_KBIP and the adjusted efc_diagApprox (mj_makeImpedance).
 fn make_impedance(m: &Model, d: &mut Data) {
     let nefc = d.raw.nefc as usize;
     let mut i = 0;
@@ -810,16 +831,18 @@ fn make_impedance(m: &Model, d: &mut Data) {
             d.efc_R[j] = max(MINVAL, (1.0 - imp) * d.efc_diagApprox[j] / imp);
             let tp = d.efc_type[j];
             let k = &mut d.efc_KBIP[4 * j..4 * j + 4];
-            k[0] = if tp == FRICTION_DOF || tp == FRICTION_TENDON {
-                0.0
-            } else if solref[0] > 0.0 {
-                1.0 / max(
-                    MINVAL,
-                    solimp[1] * solimp[1] * solref[0] * solref[0] * solref[1] * solref[1],
-                )
-            } else {
-                -solref[0] / max(MINVAL, solimp[1] * solimp[1])
-            };
+            k[0] =
+                if tp == FRICTION_DOF || tp == FRICTION_TENDON || (tp == CONTACT_ELLIPTIC && j > i)
+                {
+                    0.0
+                } else if solref[0] > 0.0 {
+                    1.0 / max(
+                        MINVAL,
+                        solimp[1] * solimp[1] * solref[0] * solref[0] * solref[1] * solref[1],
+                    )
+                } else {
+                    -solref[0] / max(MINVAL, solimp[1] * solimp[1])
+                };
             k[1] = if solref[1] > 0.0 {
                 2.0 / max(MINVAL, solimp[1] * solref[0])
             } else {
@@ -830,6 +853,7 @@ fn make_impedance(m: &Model, d: &mut Data) {
         }
         i += dim;
     }
+    super::contact::friction_regularization(m, d);
     for i in 0..nefc {
         d.efc_D[i] = 1.0 / d.efc_R[i];
     }
@@ -859,11 +883,9 @@ pub fn make_constraint(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     with_arena(d, |d, a| -> Result<(), EngineError> {
         equality(m, d, a)?;
         friction(m, d, a)?;
-        limits(m, d, a)
+        limits(m, d, a)?;
+        super::contact::instantiate(m, d, a)
     })?;
-    if !disabled(m, mjtDisableBit_::mjDSBL_CONTACT) && d.raw.ncon > 0 {
-        return Err(not_implemented("contact constraints are"));
-    }
     d.raw.maxuse_con = d.raw.maxuse_con.max(d.raw.ncon);
     d.raw.maxuse_efc = d.raw.maxuse_efc.max(d.raw.nefc);
     if d.raw.nefc == 0 {

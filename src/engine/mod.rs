@@ -5,6 +5,7 @@
 pub mod actuation;
 pub mod collision;
 pub mod constraint;
+pub mod contact;
 pub mod derivative;
 pub mod fluid;
 pub mod forward;
