@@ -1262,7 +1262,6 @@ pub unsafe extern "C" fn mj_constraintUpdate(
     cost: *mut mjtNum,
     flg_cone_hessian: c_int,
 ) {
-    let _ = flg_cone_hessian; // cone Hessians need elliptic contacts, which error before
     let nefc = if d.is_null() {
         0
     } else {
@@ -1270,7 +1269,7 @@ pub unsafe extern "C" fn mj_constraintUpdate(
     };
     let jar: Vec<f64> = slice(jar, nefc).to_vec();
     run("mj_constraintUpdate", (), m, d, |m, d| {
-        let c = constraint::constraint_update(m, d, &jar, !cost.is_null())?;
+        let c = constraint::constraint_update(m, d, &jar, !cost.is_null(), flg_cone_hessian != 0)?;
         if !cost.is_null() {
             *cost = c;
         }

@@ -1085,12 +1085,14 @@ pub fn reference_constraint(m: &Model, d: &mut Data) {
 }
 
 /// efc_state, efc_force and qfrc_constraint at jar = J*qacc - aref; returns the constraint
-/// cost when asked (mj_constraintUpdate). Elliptic cones need contacts and are not handled.
+/// cost when asked (mj_constraintUpdate); `cone_hessian` also sets the Hessian of the cone cost
+/// of contacts in the cone state (contact H).
 pub fn constraint_update(
     m: &Model,
     d: &mut Data,
     jar: &[f64],
     want_cost: bool,
+    cone_hessian: bool,
 ) -> Result<f64, EngineError> {
     let (ne, nf, nefc) = (d.raw.ne as usize, d.raw.nf as usize, d.raw.nefc as usize);
     let nv = m.raw.nv as usize;
@@ -1131,9 +1133,22 @@ pub fn constraint_update(
             state[i] = mjCNSTRSTATE_QUADRATIC as i32;
         }
     }
-    for i in ne + nf..nefc {
+    let mut i = ne + nf;
+    while i < nefc {
         if d.efc_type[i] == CONTACT_ELLIPTIC {
-            return Err(not_implemented("elliptic contact constraints are"));
+            let con = &mut d.contact[d.efc_id[i] as usize];
+            let dim = con.dim as usize;
+            elliptic_update(
+                con,
+                &jar[i..i + dim],
+                &dd[i..i + dim],
+                &mut force[i..i + dim],
+                &mut state[i..i + dim],
+                want_cost.then_some(&mut s),
+                cone_hessian,
+            );
+            i += dim;
+            continue;
         }
         if jar[i] >= 0.0 {
             force[i] = 0.0;
@@ -1144,7 +1159,84 @@ pub fn constraint_update(
             }
             state[i] = mjCNSTRSTATE_QUADRATIC as i32;
         }
+        i += 1;
     }
     jac_view!(m, d).mul_t_vec(d.qfrc_constraint, d.efc_force);
     Ok(s)
+}
+
+/// One elliptic contact in the constraint update: the zone of jar in the dual cone (top:
+/// free, bottom: quadratic, middle: cone), its forces, cost (added to `cost` in 2.2.2's order)
+/// and (cone zone) cost Hessian.
+fn elliptic_update(
+    con: &mut mjContact,
+    jar: &[f64],
+    dd: &[f64],
+    force: &mut [f64],
+    state: &mut [i32],
+    cost: Option<&mut f64>,
+    cone_hessian: bool,
+) {
+    let dim = jar.len();
+    let (mu, friction) = (con.mu, con.friction);
+    let mut u = [0.0; 6];
+    u[0] = jar[0] * mu;
+    for j in 1..dim {
+        u[j] = jar[j] * friction[j - 1];
+    }
+    let n = u[0];
+    let t = norm(&u[1..dim]);
+    let st;
+    if n >= mu * t || (t <= 0.0 && n >= 0.0) {
+        force.fill(0.0);
+        st = mjCNSTRSTATE_SATISFIED as i32;
+    } else if mu * n + t <= 0.0 || (t <= 0.0 && n < 0.0) {
+        if let Some(s) = cost {
+            for j in 0..dim {
+                *s += 0.5 * dd[j] * jar[j] * jar[j];
+            }
+        }
+        st = mjCNSTRSTATE_QUADRATIC as i32;
+    } else {
+        let dm = dd[0] / (mu * mu * (1.0 + mu * mu));
+        let nmt = n - mu * t;
+        if let Some(s) = cost {
+            *s += 0.5 * dm * nmt * nmt;
+        }
+        force[0] = -dm * nmt * mu;
+        for j in 1..dim {
+            force[j] = -force[0] / t * u[j] * friction[j - 1];
+        }
+        st = mjCNSTRSTATE_CONE as i32;
+        if cone_hessian {
+            let h = &mut con.H;
+            let scl = -mu / t;
+            h[0] = 1.0;
+            for j in 1..dim {
+                h[j] = scl * u[j];
+            }
+            let scl = mu * n / (t * t * t);
+            for k in 1..dim {
+                for j in k..dim {
+                    h[k * dim + j] = scl * u[j] * u[k];
+                }
+            }
+            let scl = mu * mu - mu * n / t;
+            for j in 1..dim {
+                h[j * (dim + 1)] += scl;
+            }
+            for k in 0..dim {
+                let scl = dm * if k == 0 { mu } else { friction[k - 1] };
+                for j in k..dim {
+                    h[k * dim + j] *= scl * if j == 0 { mu } else { friction[j - 1] };
+                }
+            }
+            for k in 0..dim {
+                for j in k + 1..dim {
+                    h[j * dim + k] = h[k * dim + j];
+                }
+            }
+        }
+    }
+    state.fill(st);
 }

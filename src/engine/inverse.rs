@@ -51,7 +51,7 @@ pub fn inv_constraint(m: &Model, d: &mut Data) -> Result<(), EngineError> {
             for i in 0..nefc {
                 jar[i] -= d.efc_aref[i];
             }
-            super::constraint::constraint_update(m, d, jar, false).map(|_| ())
+            super::constraint::constraint_update(m, d, jar, false, false).map(|_| ())
         })?;
     }
     tick(d, mjTIMER_CONSTRAINT);

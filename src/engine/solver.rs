@@ -8,7 +8,7 @@ use super::jacobian::{add_m_dense, add_m_sparse_with, mul_m};
 use super::{disabled, not_implemented, tick, Data, EngineError, Model, MINVAL};
 use crate::abi::view::Arena;
 use crate::abi::*;
-use crate::math::blas::{dot, mul_mat_vec, norm, sqr_mat_td};
+use crate::math::blas::{add_to_scl, dot, mul_mat_vec, norm, sqr_mat_td};
 use crate::math::chol::{chol_factor, chol_solve, chol_update};
 use crate::math::chol_sparse::{chol_factor_sparse, chol_solve_sparse, chol_update_sparse};
 use crate::math::sparse::{
@@ -21,6 +21,7 @@ const QUADRATIC: i32 = mjCNSTRSTATE_QUADRATIC as i32;
 const LINEARNEG: i32 = mjCNSTRSTATE_LINEARNEG as i32;
 const LINEARPOS: i32 = mjCNSTRSTATE_LINEARPOS as i32;
 const CONE: i32 = mjCNSTRSTATE_CONE as i32;
+const ELLIPTIC: i32 = mjtConstraint_::mjCNSTR_CONTACT_ELLIPTIC as i32;
 
 /// Cost or gradient scaled by the mean inertia and the number of dofs.
 fn rescale(m: &Model, x: f64) -> f64 {
@@ -107,7 +108,7 @@ fn warmstart(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> 
     for i in 0..nefc {
         jar[i] -= d.efc_aref[i];
     }
-    let mut cost_warmstart = constraint_update(m, d, jar, true)?;
+    let mut cost_warmstart = constraint_update(m, d, jar, true, false)?;
     if m.raw.opt.solver == mjtSolver_::mjSOL_PGS as i32 {
         let mut pgs_warmstart = dot(d.efc_force, d.efc_b, nefc);
         let arf = a.alloc(nefc)?;
@@ -130,7 +131,7 @@ fn warmstart(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> 
                 0.5 * (ma[i] - d.qfrc_smooth[i]) * (d.qacc_warmstart[i] - d.qacc_smooth[i]);
         }
         let b = std::mem::take(&mut d.efc_b);
-        let cost_smooth = constraint_update(m, d, b, true);
+        let cost_smooth = constraint_update(m, d, b, true, false);
         d.efc_b = b;
         if cost_warmstart > cost_smooth? {
             d.qacc.copy_from_slice(d.qacc_smooth);
@@ -333,6 +334,7 @@ struct Ctx<'b> {
     quad: &'b mut [f64],
     newton: bool,
     h: &'b mut [f64],
+    hcone: &'b mut [f64],
     hdiag: &'b mut [f64],
     hvec: &'b mut [f64],
     sparse: bool,
@@ -365,7 +367,7 @@ struct Pnt {
 fn update_constraint(m: &Model, d: &mut Data, c: &mut Ctx) -> Result<(), EngineError> {
     let nv = m.raw.nv as usize;
     let nefc = d.raw.nefc as usize;
-    c.cost = constraint_update(m, d, c.jaref, true)?;
+    c.cost = constraint_update(m, d, c.jaref, true, c.newton)?;
     c.nactive = d.efc_state[..nefc]
         .iter()
         .filter(|&&s| s != SATISFIED)
@@ -386,11 +388,12 @@ fn update_gradient(m: &Model, d: &mut Data, c: &mut Ctx) {
     for i in 0..nv {
         c.grad[i] = c.ma[i] - d.qfrc_smooth[i] - d.qfrc_constraint[i];
     }
+    let h = if c.ncone > 0 { &*c.hcone } else { &*c.h };
     if c.newton && c.sparse {
         let (nnz, adr, ind) = (&*c.rownnz, &*c.rowadr, &*c.colind);
-        chol_solve_sparse(c.mgrad, c.h, c.grad, nv, nnz, adr, ind);
+        chol_solve_sparse(c.mgrad, h, c.grad, nv, nnz, adr, ind);
     } else if c.newton {
-        chol_solve(c.mgrad, c.h, c.grad, nv);
+        chol_solve(c.mgrad, h, c.grad, nv);
     } else {
         solve_ld(m, c.mgrad, Some(c.grad), 1, d.qLD, d.qLDiagInv);
     }
@@ -403,15 +406,44 @@ fn prepare(m: &Model, d: &Data, c: &mut Ctx) {
     let v = &*c.search;
     c.quad_gauss[1] = dot(v, c.ma, nv) - dot(v, d.qfrc_smooth, nv);
     c.quad_gauss[2] = 0.5 * dot(v, c.mv, nv);
-    for i in 0..nefc {
+    let mut i = 0;
+    while i < nefc {
         let (jv, jaref, dd) = (c.jv[i], c.jaref[i], d.efc_D[i]);
         let dj0 = dd * jaref;
-        let q = &mut c.quad[3 * i..3 * i + 3];
-        q[0] = jaref * dj0;
-        q[1] = jv * dj0;
-        q[2] = jv * dd * jv;
+        let mut q = [jaref * dj0, jv * dj0, jv * dd * jv];
+        let mut next = i + 1;
+        if d.efc_type[i] == ELLIPTIC {
+            // vector quadratic (bottom zone), and the cone quantities in the following
+            // rows' slots (dim >= 3): U0, V0, UU, UV, VV, Dm
+            let con = &d.contact[d.efc_id[i] as usize];
+            let (dim, mu) = (con.dim as usize, con.mu);
+            let (mut u, mut v) = ([0.0; 6], [0.0; 6]);
+            for j in 1..dim {
+                let dj = d.efc_D[i + j] * c.jaref[i + j];
+                q[0] += c.jaref[i + j] * dj;
+                q[1] += c.jv[i + j] * dj;
+                q[2] += c.jv[i + j] * d.efc_D[i + j] * c.jv[i + j];
+            }
+            u[0] = jaref * mu;
+            v[0] = jv * mu;
+            for j in 1..dim {
+                u[j] = c.jaref[i + j] * con.friction[j - 1];
+                v[j] = c.jv[i + j] * con.friction[j - 1];
+            }
+            let (mut uu, mut uv, mut vv) = (0.0, 0.0, 0.0);
+            for j in 1..dim {
+                uu += u[j] * u[j];
+                uv += u[j] * v[j];
+                vv += v[j] * v[j];
+            }
+            let dm = dd / (mu * mu * (1.0 + mu * mu));
+            c.quad[3 * i + 3..3 * i + 9].copy_from_slice(&[u[0], v[0], uu, uv, vv, dm]);
+            next = i + dim;
+        }
         q[0] *= 0.5;
         q[2] *= 0.5;
+        c.quad[3 * i..3 * i + 3].copy_from_slice(&q);
+        i = next;
     }
 }
 
@@ -442,15 +474,47 @@ fn eval(d: &Data, c: &mut Ctx, p: &mut Pnt) {
             add_to3(&mut total, &[f * (-0.5 * rf + start), f * dir, 0.0]);
         }
     }
-    for i in ne + nf..nefc {
-        let x = c.jaref[i] + alpha * c.jv[i];
-        if x < 0.0 {
-            add_to3(&mut total, &c.quad[3 * i..]);
+    let (mut cost, mut d0, mut d1) = (0.0, 0.0, 0.0);
+    let mut i = ne + nf;
+    while i < nefc {
+        if d.efc_type[i] != ELLIPTIC {
+            let x = c.jaref[i] + alpha * c.jv[i];
+            if x < 0.0 {
+                add_to3(&mut total, &c.quad[3 * i..]);
+            }
+            i += 1;
+            continue;
         }
+        let con = &d.contact[d.efc_id[i] as usize];
+        let mu = con.mu;
+        let q = &c.quad[3 * i..3 * i + 9];
+        let (u0, v0, uu, uv, vv, dm) = (q[3], q[4], q[5], q[6], q[7], q[8]);
+        let n = u0 + alpha * v0;
+        let tsqr = uu + alpha * (2.0 * uv + alpha * vv);
+        if tsqr <= 0.0 {
+            if n < 0.0 {
+                add_to3(&mut total, q);
+            }
+        } else {
+            let t = tsqr.sqrt();
+            if n >= mu * t {
+                // top zone: no cost
+            } else if mu * n + t <= 0.0 {
+                add_to3(&mut total, q);
+            } else {
+                let n1 = v0;
+                let t1 = (uv + alpha * vv) / t;
+                let t2 = vv / t - (uv + alpha * vv) * t1 / (t * t);
+                cost += 0.5 * dm * (n - mu * t) * (n - mu * t);
+                d0 += dm * (n - mu * t) * (n1 - mu * t1);
+                d1 += dm * ((n1 - mu * t1) * (n1 - mu * t1) + (n - mu * t) * (-mu * t2));
+            }
+        }
+        i += con.dim as usize;
     }
-    let cost = 0.0 + (alpha * alpha * total[2] + alpha * total[1] + total[0]);
-    let d0 = 0.0 + (2.0 * alpha * total[2] + total[1]);
-    let mut d1 = 0.0 + 2.0 * total[2];
+    let cost = cost + (alpha * alpha * total[2] + alpha * total[1] + total[0]);
+    let d0 = d0 + (2.0 * alpha * total[2] + total[1]);
+    let mut d1 = d1 + 2.0 * total[2];
     if d1 <= 0.0 {
         crate::capi::errmem::warning("Linesearch objective is not convex");
         d1 = MINVAL;
@@ -627,8 +691,70 @@ fn hessian_direct(m: &Model, d: &mut Data, a: &mut Arena, c: &mut Ctx) -> Result
         chol_factor(c.h, nv, MINVAL);
         c.nnz = nv * nv;
     }
+    if c.ncone > 0 {
+        hessian_cone(m, d, a, c)?;
+    }
     c.nupdate = nefc as i32;
     Ok(())
+}
+
+/// Hcone = H plus the cone Hessians of contacts in the cone state, as rank-one updates of the
+/// factor by the rows of L'J (L: Cholesky factor of the contact's H).
+fn hessian_cone(m: &Model, d: &mut Data, a: &mut Arena, c: &mut Ctx) -> Result<(), EngineError> {
+    let nv = m.raw.nv as usize;
+    let nefc = d.raw.nefc as usize;
+    c.hcone[..c.nnz].copy_from_slice(&c.h[..c.nnz]);
+    a.scope(|a| -> Result<(), EngineError> {
+        let ltj = a.alloc(6 * nv)?;
+        let row = a.alloc(nv)?;
+        let ind = a.alloc_int(nv)?;
+        let mut i = 0;
+        while i < nefc {
+            if d.efc_state[i] != CONE {
+                i += 1;
+                continue;
+            }
+            let con = &d.contact[d.efc_id[i] as usize];
+            let dim = con.dim as usize;
+            let mut local = [0.0; 36];
+            local[..dim * dim].copy_from_slice(&con.H[..dim * dim]);
+            chol_factor(&mut local, dim, MINVAL);
+            let n = if c.sparse {
+                d.efc_J_rownnz[i] as usize
+            } else {
+                nv
+            };
+            ltj[..dim * n].fill(0.0);
+            for r in 0..dim {
+                let jrow = if c.sparse {
+                    let adr = d.efc_J_rowadr[i + r] as usize;
+                    &d.efc_J[adr..adr + n]
+                } else {
+                    &d.efc_J[(i + r) * nv..(i + r + 1) * nv]
+                };
+                for col in 0..=r {
+                    add_to_scl(&mut ltj[col * n..(col + 1) * n], jrow, local[r * dim + col]);
+                }
+            }
+            for r in 0..dim {
+                row[..n].copy_from_slice(&ltj[r * n..(r + 1) * n]);
+                if c.sparse {
+                    let adr = d.efc_J_rowadr[i + r] as usize;
+                    ind[..n].copy_from_slice(&d.efc_J_colind[adr..adr + n]);
+                    chol_update_sparse(
+                        c.hcone, row, nv, true, c.rownnz, c.rowadr, c.colind, n, ind, c.buf,
+                        c.buf_ind,
+                    )
+                    .map_err(|e| EngineError(e.into()))?;
+                } else {
+                    chol_update(c.hcone, row, nv, true);
+                }
+            }
+            c.nupdate += dim as i32;
+            i += dim;
+        }
+        Ok(())
+    })
 }
 
 /// Rank-one updates of the factor for rows whose quadratic state changed (HessianIncremental).
@@ -669,6 +795,9 @@ fn hessian_incremental(
             return hessian_direct(m, d, a, c);
         }
     }
+    if c.ncone > 0 {
+        hessian_cone(m, d, a, c)?;
+    }
     Ok(())
 }
 
@@ -694,6 +823,7 @@ fn cg_newton(
         quad: a.alloc(3 * nefc)?,
         newton,
         h: a.alloc(hn)?,
+        hcone: a.alloc(hn)?,
         hdiag: a.alloc(if newton { nefc } else { 0 })?,
         hvec: a.alloc(if newton { nv } else { 0 })?,
         sparse: is_sparse(m),
