@@ -23,6 +23,7 @@ pub mod rne;
 pub mod sensor;
 pub mod setconst;
 pub mod solver;
+pub mod solver_dual;
 pub mod support;
 pub mod tendon;
 pub mod transmission;

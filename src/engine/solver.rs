@@ -1,11 +1,12 @@
 //! Constraint solvers (mj_fwdConstraint), dense or sparse: warm start, projected Gauss-Seidel
 //! and noslip in the dual, and the primal conjugate-gradient and Newton methods with their exact
-//! line search. Contact (cone) rows are not handled: they error before reaching a solver.
+//! line search, with pyramidal and elliptic contact cones.
 
 use super::constraint::{constraint_update, is_sparse, jac_view, with_arena};
 use super::inertia::solve_ld;
 use super::jacobian::{add_m_dense, add_m_sparse_with, mul_m};
-use super::{disabled, not_implemented, tick, Data, EngineError, Model, MINVAL};
+use super::solver_dual::{cost_change, noslip_elliptic, noslip_pyramid, pgs_elliptic, residual};
+use super::{disabled, tick, Data, EngineError, Model, MINVAL};
 use crate::abi::view::Arena;
 use crate::abi::*;
 use crate::math::blas::{add_to_scl, dot, mul_mat_vec, norm, sqr_mat_td};
@@ -22,6 +23,7 @@ const LINEARNEG: i32 = mjCNSTRSTATE_LINEARNEG as i32;
 const LINEARPOS: i32 = mjCNSTRSTATE_LINEARPOS as i32;
 const CONE: i32 = mjCNSTRSTATE_CONE as i32;
 const ELLIPTIC: i32 = mjtConstraint_::mjCNSTR_CONTACT_ELLIPTIC as i32;
+const PYRAMIDAL: i32 = mjtConstraint_::mjCNSTR_CONTACT_PYRAMIDAL as i32;
 
 /// Cost or gradient scaled by the mean inertia and the number of dofs.
 fn rescale(m: &Model, x: f64) -> f64 {
@@ -157,16 +159,39 @@ fn dual_state(d: &mut Data) -> Result<i32, EngineError> {
             QUADRATIC
         };
     }
-    for i in ne + nf..nefc {
-        if d.efc_type[i] == mjtConstraint_::mjCNSTR_CONTACT_ELLIPTIC as i32 {
-            return Err(not_implemented("elliptic contact constraints are"));
+    let mut i = ne + nf;
+    while i < nefc {
+        if d.efc_type[i] != ELLIPTIC {
+            if force[i] <= 0.0 {
+                state[i] = SATISFIED;
+            } else {
+                state[i] = QUADRATIC;
+                nactive += 1;
+            }
+            i += 1;
+            continue;
         }
-        if force[i] <= 0.0 {
-            state[i] = SATISFIED;
+        // elliptic: the zone of the force mapped to the regular cone
+        let con = &d.contact[d.efc_id[i] as usize];
+        let (dim, mu) = (con.dim as usize, con.mu);
+        let mut f = [0.0; 6];
+        f[0] = force[i] / mu;
+        for j in 1..dim {
+            f[j] = force[i + j] / con.friction[j - 1];
+        }
+        let (n, t) = (f[0], norm(&f[1..dim]));
+        let result = if mu * n >= t {
+            SATISFIED
         } else {
-            state[i] = QUADRATIC;
-            nactive += 1;
-        }
+            nactive += dim as i32;
+            if n + mu * t <= 0.0 {
+                QUADRATIC
+            } else {
+                CONE
+            }
+        };
+        state[i..i + dim].fill(result);
+        i += dim;
     }
     Ok(nactive)
 }
@@ -216,7 +241,7 @@ fn dual_finish(m: &Model, d: &mut Data) {
     }
 }
 
-/// Projected Gauss-Seidel on the dual (mj_solPGS), scalar constraints only.
+/// Projected Gauss-Seidel on the dual (mj_solPGS); elliptic contacts as blocks.
 fn pgs(m: &Model, d: &mut Data, a: &mut Arena, maxiter: i32) -> Result<(), EngineError> {
     let (ne, nf, nefc) = (d.raw.ne as usize, d.raw.nf as usize, d.raw.nefc as usize);
     let arinv = a.alloc(nefc)?;
@@ -227,7 +252,18 @@ fn pgs(m: &Model, d: &mut Data, a: &mut Arena, maxiter: i32) -> Result<(), Engin
     let mut iter = 0;
     while iter < maxiter {
         let mut improvement = 0.0;
-        for i in 0..nefc {
+        let mut i = 0;
+        while i < nefc {
+            if d.efc_type[i] == ELLIPTIC {
+                let dim = d.contact[d.efc_id[i] as usize].dim as usize;
+                let (mut res, mut old, mut athis) = ([0.0; 6], [0.0; 6], [0.0; 36]);
+                residual(d, sparse, &mut res, i, dim, false);
+                old[..dim].copy_from_slice(&d.efc_force[i..i + dim]);
+                pgs_elliptic(d, sparse, i, dim, arinv[i], &res, &old, &mut athis)?;
+                improvement -= cost_change(&athis, &mut d.efc_force[i..i + dim], &old, &res, dim);
+                i += dim;
+                continue;
+            }
             let res = d.efc_b[i] + ar_row_dot(d, sparse, i);
             let old = d.efc_force[i];
             let f = &mut d.efc_force[i];
@@ -250,6 +286,7 @@ fn pgs(m: &Model, d: &mut Data, a: &mut Arena, maxiter: i32) -> Result<(), Engin
                 change = 0.0;
             }
             improvement -= change;
+            i += 1;
         }
         oldstate.copy_from_slice(&d.efc_state[..nefc]);
         let nactive = dual_state(d)?;
@@ -270,8 +307,8 @@ fn pgs(m: &Model, d: &mut Data, a: &mut Arena, maxiter: i32) -> Result<(), Engin
     Ok(())
 }
 
-/// Dual clean-up of friction forces with the constraint regularizer removed (mj_solNoSlip);
-/// contact friction needs contacts and is not handled.
+/// Dual clean-up of friction forces with the constraint regularizer removed (mj_solNoSlip):
+/// dof and tendon friction, then contact friction (pyramid edge pairs, elliptic tangents).
 fn noslip(m: &Model, d: &mut Data, a: &mut Arena, maxiter: i32) -> Result<(), EngineError> {
     let (ne, nf, nefc) = (d.raw.ne as usize, d.raw.nf as usize, d.raw.nefc as usize);
     let sparse = is_sparse(m);
@@ -279,12 +316,6 @@ fn noslip(m: &Model, d: &mut Data, a: &mut Arena, maxiter: i32) -> Result<(), En
     let oldstate = a.alloc_int(nefc)?;
     ar_diag_inv(d, sparse, arinv, true)?;
     dual_state(d)?;
-    if d.efc_type[ne + nf..nefc]
-        .iter()
-        .any(|&t| t >= mjtConstraint_::mjCNSTR_CONTACT_FRICTIONLESS as i32)
-    {
-        return Err(not_implemented("noslip for contacts is"));
-    }
     let mut iter = 0;
     while iter < maxiter {
         let mut improvement = 0.0;
@@ -307,6 +338,26 @@ fn noslip(m: &Model, d: &mut Data, a: &mut Arena, maxiter: i32) -> Result<(), En
             }
             let delta = *f - old;
             improvement -= 0.5 * delta * delta / arinv[i] + delta * res;
+        }
+        let mut i = ne + nf;
+        while i < nefc {
+            let kind = d.efc_type[i];
+            if kind != PYRAMIDAL && kind != ELLIPTIC {
+                i += 1;
+                continue;
+            }
+            let dim = d.contact[d.efc_id[i] as usize].dim as usize;
+            match kind {
+                PYRAMIDAL => {
+                    noslip_pyramid(d, sparse, i, dim, &mut improvement)?;
+                    i += 2 * (dim - 1);
+                }
+                ELLIPTIC => {
+                    improvement += noslip_elliptic(d, sparse, i, dim)?;
+                    i += dim;
+                }
+                _ => i += 1,
+            }
         }
         oldstate.copy_from_slice(&d.efc_state[..nefc]);
         let nactive = dual_state(d)?;
