@@ -249,6 +249,26 @@ mjtNum mju_rayGeom(const mjtNum *pos,
 
 void mj_mulJacTVec(const mjModel *m, mjData *d, mjtNum *res, const mjtNum *vec);
 
+mjtNum mj_rayHfield(const mjModel *m,
+                    const mjData *d,
+                    int geomid,
+                    const mjtNum *pnt,
+                    const mjtNum *vec);
+
+mjtNum mj_rayMesh(const mjModel *m,
+                  const mjData *d,
+                  int geomid,
+                  const mjtNum *pnt,
+                  const mjtNum *vec);
+
+mjtNum mju_raySkin(int nface,
+                   int nvert,
+                   const int *face,
+                   const float *vert,
+                   const mjtNum *pnt,
+                   const mjtNum *vec,
+                   int *vertid);
+
 mjtNum mj_ray(const mjModel *m,
               const mjData *d,
               const mjtNum *pnt,
@@ -344,26 +364,6 @@ int mj_setLengthRange(mjModel *m,
                       const mjLROpt *opt,
                       char *error,
                       int error_sz);
-
-mjtNum mj_rayHfield(const mjModel *m,
-                    const mjData *d,
-                    int geomid,
-                    const mjtNum *pnt,
-                    const mjtNum *vec);
-
-mjtNum mj_rayMesh(const mjModel *m,
-                  const mjData *d,
-                  int geomid,
-                  const mjtNum *pnt,
-                  const mjtNum *vec);
-
-mjtNum mju_raySkin(int nface,
-                   int nvert,
-                   const int *face,
-                   const float *vert,
-                   const mjtNum *pnt,
-                   const mjtNum *vec,
-                   int *vertid);
 
 void mj_printFormattedModel(const mjModel *m, const char *filename, const char *float_format);
 

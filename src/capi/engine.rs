@@ -1376,6 +1376,76 @@ pub unsafe extern "C" fn mj_mulJacTVec(
 }
 
 #[no_mangle]
+pub unsafe extern "C" fn mj_rayHfield(
+    m: *const mjModel,
+    d: *const mjData,
+    geomid: c_int,
+    pnt: *const mjtNum,
+    vec: *const mjtNum,
+) -> mjtNum {
+    let Some(g) = checked_id("mj_rayHfield", m, d, geomid, |m| m.ngeom) else {
+        return -1.0;
+    };
+    let (p, v) = (arr3(pnt), arr3(vec));
+    run_const("mj_rayHfield", -1.0, m, d, |mv, dv| {
+        engine::ray_mesh::ray_hfield(mv, dv, g, &p, &v)
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mj_rayMesh(
+    m: *const mjModel,
+    d: *const mjData,
+    geomid: c_int,
+    pnt: *const mjtNum,
+    vec: *const mjtNum,
+) -> mjtNum {
+    let Some(g) = checked_id("mj_rayMesh", m, d, geomid, |m| m.ngeom) else {
+        return -1.0;
+    };
+    let (p, v) = (arr3(pnt), arr3(vec));
+    run_const("mj_rayMesh", -1.0, m, d, |mv, dv| {
+        engine::ray_mesh::ray_mesh(mv, dv, g, &p, &v)
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mju_raySkin(
+    nface: c_int,
+    nvert: c_int,
+    face: *const c_int,
+    vert: *const f32,
+    pnt: *const mjtNum,
+    vec: *const mjtNum,
+    vertid: *mut c_int,
+) -> mjtNum {
+    if face.is_null() && nface > 0 || vert.is_null() && nvert > 0 {
+        errmem::error("mju_raySkin: NULL face or vertex array");
+        return -1.0;
+    }
+    guard("mju_raySkin", -1.0, || {
+        let face: &[i32] = if face.is_null() {
+            &[]
+        } else {
+            std::slice::from_raw_parts(face, 3 * nface.max(0) as usize)
+        };
+        let vert: &[f32] = if vert.is_null() {
+            &[]
+        } else {
+            std::slice::from_raw_parts(vert, 3 * nvert.max(0) as usize)
+        };
+        if face.iter().any(|&f| f < 0 || f >= nvert) {
+            return Err(EngineError("mju_raySkin: face vertex out of range".into()));
+        }
+        let (x, id) = engine::ray_mesh::ray_skin(face, vert, &arr3(pnt), &arr3(vec));
+        if !vertid.is_null() && id >= 0 {
+            *vertid = id;
+        }
+        Ok(x)
+    })
+}
+
+#[no_mangle]
 pub unsafe extern "C" fn mj_ray(
     m: *const mjModel,
     d: *const mjData,

@@ -30,21 +30,3 @@ pub unsafe extern "C" fn mj_setLengthRange(m: *mut mjModel, d: *mut mjData, inde
     0 as c_int
 }
 
-#[no_mangle]
-pub unsafe extern "C" fn mj_rayHfield(m: *const mjModel, d: *const mjData, geomid: c_int, pnt: *const mjtNum, vec: *const mjtNum) -> mjtNum {
-    pending("mj_rayHfield");
-    0.0
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mj_rayMesh(m: *const mjModel, d: *const mjData, geomid: c_int, pnt: *const mjtNum, vec: *const mjtNum) -> mjtNum {
-    pending("mj_rayMesh");
-    0.0
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mju_raySkin(nface: c_int, nvert: c_int, face: *const c_int, vert: *const f32, pnt: *const mjtNum, vec: *const mjtNum, vertid: *mut c_int) -> mjtNum {
-    pending("mju_raySkin");
-    0.0
-}
-

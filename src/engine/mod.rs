@@ -19,6 +19,7 @@ pub mod linalg;
 pub mod passive;
 pub mod print;
 pub mod ray;
+pub mod ray_mesh;
 pub mod rne;
 pub mod sensor;
 pub mod setconst;

@@ -1,8 +1,8 @@
 //! Ray casting (mj_ray, mju_rayGeom): distance along the ray direction to the nearest surface
-//! point, or -1 when the ray misses. Meshes and height fields are not supported yet.
+//! point, or -1 when the ray misses. Meshes, height fields and skins: ray_mesh.rs.
 
 use super::linalg::row;
-use super::{not_implemented, Data, EngineError, Model, MINVAL};
+use super::{Data, EngineError, Model, MINVAL};
 use crate::abi::mjtGeom_::*;
 use crate::math::{norm3, Mat3, Vec3};
 
@@ -10,7 +10,7 @@ use crate::math::{norm3, Mat3, Vec3};
 const NGROUP: i32 = 6;
 
 /// Ray point and direction in the geom frame.
-fn to_local(pos: &Vec3, mat: &Mat3, pnt: &Vec3, vec: &Vec3) -> (Vec3, Vec3) {
+pub fn to_local(pos: &Vec3, mat: &Mat3, pnt: &Vec3, vec: &Vec3) -> (Vec3, Vec3) {
     let dif = [pnt[0] - pos[0], pnt[1] - pos[1], pnt[2] - pos[2]];
     let tr = |v: &Vec3| {
         [
@@ -168,6 +168,20 @@ fn cylinder(pos: &Vec3, mat: &Mat3, size: &[f64], pnt: &Vec3, vec: &Vec3) -> f64
 }
 
 fn boxed(pos: &Vec3, mat: &Mat3, size: &[f64], pnt: &Vec3, vec: &Vec3) -> f64 {
+    box_faces(pos, mat, size, pnt, vec, &mut [0.0; 6])
+}
+
+/// Box intersection; `all` receives the distance to each face (-x, +x, -y, +y, -z, +z) that
+/// the ray crosses inside the face, else -1.
+pub fn box_faces(
+    pos: &Vec3,
+    mat: &Mat3,
+    size: &[f64],
+    pnt: &Vec3,
+    vec: &Vec3,
+    all: &mut [f64; 6],
+) -> f64 {
+    *all = [-1.0; 6];
     let radius = (size[0] * size[0] + size[1] * size[1] + size[2] * size[2]).sqrt();
     if sphere(pos, radius, pnt, vec) < 0.0 {
         return -1.0;
@@ -185,6 +199,7 @@ fn boxed(pos: &Vec3, mat: &Mat3, size: &[f64], pnt: &Vec3, vec: &Vec3) -> f64 {
                     let p1 = lp[k] + sol * lv[k];
                     if p0.abs() <= size[j] && p1.abs() <= size[k] {
                         x = nearer(x, sol);
+                        all[2 * i + (side > 0.0) as usize] = sol;
                     }
                 }
             }
@@ -252,7 +267,7 @@ fn eliminated(m: &Model, g: usize, groups: Option<&[u8]>, with_static: bool, exc
 }
 
 /// Nearest geom hit by the ray from `pnt` along `vec`: (distance, geom id), or (-1, -1)
-/// (mj_ray). Meshes and height fields are not supported yet.
+/// (mj_ray).
 pub fn ray(
     m: &Model,
     d: &Data,
@@ -271,17 +286,20 @@ pub fn ray(
             continue;
         }
         let ty = m.geom_type()[g];
-        if ty == mjGEOM_MESH as i32 || ty == mjGEOM_HFIELD as i32 {
-            return Err(not_implemented("rays against meshes and height fields are"));
-        }
-        let x = ray_geom(
-            &row(d.geom_xpos, g),
-            &row(d.geom_xmat, g),
-            &m.geom_size()[3 * g..3 * g + 3],
-            pnt,
-            vec,
-            ty,
-        )?;
+        let x = if ty == mjGEOM_MESH as i32 {
+            super::ray_mesh::ray_mesh(m, d, g, pnt, vec)?
+        } else if ty == mjGEOM_HFIELD as i32 {
+            super::ray_mesh::ray_hfield(m, d, g, pnt, vec)?
+        } else {
+            ray_geom(
+                &row(d.geom_xpos, g),
+                &row(d.geom_xmat, g),
+                &m.geom_size()[3 * g..3 * g + 3],
+                pnt,
+                vec,
+                ty,
+            )?
+        };
         if x >= 0.0 && (x < dist || dist < 0.0) {
             dist = x;
             id = g as i32;
