@@ -118,6 +118,8 @@ fn blank_unknown_nodes(text: &str) -> std::borrow::Cow<'_, str> {
 
 /// Parses a whole document; returns its root element or a message naming the problem and line.
 pub fn parse(text: &str) -> Result<Element, String> {
+    // tinyxml2 parses a C string: a NUL byte ends the document
+    let text = text.split('\0').next().unwrap_or("");
     let text = &*blank_unknown_nodes(text);
     let lines = Lines::new(text);
     let mut reader = Reader::from_str(text);
@@ -188,7 +190,8 @@ pub fn parse(text: &str) -> Result<Element, String> {
         }
     }
     // an unclosed element after the first root is ignored, as tinyxml2 does
-    if let Some(open) = stack.first().filter(|_| root.is_none()) {
+    // tinyxml2 names the innermost element left open
+    if let Some(open) = stack.last().filter(|_| root.is_none()) {
         return Err(format!(
             "XML parse error 15:\nError=XML_ERROR_PARSING ErrorID=15 (0xf) Line number={}\n",
             open.line

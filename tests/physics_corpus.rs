@@ -1,0 +1,153 @@
+//! Full physics over the corpus (common::corpus_dirs): for every model both libraries load,
+//! mj_forward and mj_step at 50 states of the reference's trajectory and collision detection
+//! there (capi-tests/harness groups forward, step, collision), compared within the group
+//! tolerances raised to 1000x the reference's noise floor. A model our engine stops on with
+//! "not implemented" is counted, never one that differs. Report: physics-corpus.txt.
+
+mod common;
+use common::*;
+
+/// Models larger than this (nv) are left to the differential lists: their dumps run to GBs.
+const MAX_NV: i32 = 400;
+
+#[test]
+fn corpus_physics() {
+    let files = corpus_files();
+    if files.is_empty() {
+        eprintln!("corpus_physics: skipped, no corpus");
+        return;
+    }
+    let bin = harness_bin();
+    let base = work_dir("physics-corpus");
+    let (mut same, mut unsupported, mut skipped) = (Vec::new(), Vec::new(), 0);
+    let mut differ = Vec::new();
+    let mut worst = 0.0f64;
+    for (i, f) in files.iter().enumerate() {
+        let dir = base.join(i.to_string());
+        let _ = std::fs::remove_dir_all(&dir);
+        let (fs, ds) = (
+            f.to_string_lossy().to_string(),
+            dir.to_string_lossy().to_string(),
+        );
+        // the compiled model first: small, tells the size and whether ours loads it
+        let r = run(
+            &bin.join("harness-ref"),
+            &["record", &fs, &ds, "--model-only"],
+            &[],
+            120,
+        );
+        if !r.status.success() {
+            skipped += 1;
+            continue;
+        }
+        run(
+            &bin.join("harness-ours"),
+            &["replay", &fs, &ds, "--model-only"],
+            &[],
+            120,
+        );
+        let c = run(
+            &bin.join("harness-ref"),
+            &["compare", &ds, "--groups", "model"],
+            &[],
+            120,
+        );
+        let rel = f.display().to_string();
+        if !c.status.success() {
+            unsupported.push(format!("{rel}: compiler"));
+            continue;
+        }
+        if model_nv(&ds) > MAX_NV {
+            skipped += 1;
+            continue;
+        }
+        let groups = "forward,step,collision";
+        let r = run(
+            &bin.join("harness-ref"),
+            &["record", &fs, &ds, "--groups", groups],
+            &[],
+            600,
+        );
+        if !r.status.success() {
+            skipped += 1; // the reference stops on this model
+            continue;
+        }
+        run(
+            &bin.join("harness-ours"),
+            &["replay", &fs, &ds, "--groups", groups],
+            &[],
+            600,
+        );
+        let c = run(
+            &bin.join("harness-ref"),
+            &["compare", &ds, "--groups", groups],
+            &[],
+            300,
+        );
+        let out = text(&c.stdout);
+        let _ = std::fs::remove_dir_all(&dir);
+        if c.status.success() {
+            for l in out
+                .lines()
+                .filter(|l| l.contains("check groups pass; worst"))
+            {
+                if let Some(w) = l.split("worst relative error ").nth(1) {
+                    let w: f64 = w
+                        .split_whitespace()
+                        .next()
+                        .unwrap_or("0")
+                        .parse()
+                        .unwrap_or(0.0);
+                    worst = worst.max(w);
+                }
+            }
+            same.push(rel);
+        } else if out.contains("not implemented") {
+            unsupported.push(format!("{rel}: not implemented"));
+        } else {
+            differ.push(format!("{rel}:\n{out}"));
+        }
+    }
+    let msg = format!(
+        "physics corpus (forward, step, collision at 50 states): {} of {} models at parity \
+         (worst relative error {worst:.2e}); {} stop on features not supported yet; {} differ; \
+         {skipped} skipped (reference rejects or stops, or nv > {MAX_NV})\n{}{}",
+        same.len(),
+        same.len() + unsupported.len() + differ.len(),
+        unsupported.len(),
+        differ.len(),
+        unsupported
+            .iter()
+            .map(|u| format!("  unsupported: {u}\n"))
+            .collect::<String>(),
+        differ
+            .iter()
+            .map(|d| format!("  DIFFERS: {d}\n"))
+            .collect::<String>(),
+    );
+    report("physics-corpus", &msg);
+    assert!(differ.is_empty(), "{msg}");
+}
+
+/// nv of the reference's compiled model in a harness directory.
+fn model_nv(dir: &str) -> i32 {
+    let p = std::path::Path::new(dir).join("ref/model.bin");
+    let bytes = std::fs::read(p).unwrap_or_default();
+    // record "nv" of type 'i': name length, name, type, byte count, value
+    let key = b"size.nv";
+    let mut i = 4;
+    while i + 4 <= bytes.len() {
+        let nl = u32::from_le_bytes(bytes[i..i + 4].try_into().unwrap()) as usize;
+        let name = &bytes[i + 4..(i + 4 + nl).min(bytes.len())];
+        let t = i + 4 + nl;
+        if t + 9 > bytes.len() {
+            break;
+        }
+        let nb = u64::from_le_bytes(bytes[t + 1..t + 9].try_into().unwrap()) as usize;
+        if name == key && nb == 4 {
+            return i32::from_le_bytes(bytes[t + 9..t + 13].try_into().unwrap());
+        }
+        i = t + 9 + nb;
+    }
+    0
+}
