@@ -1,7 +1,6 @@
 //! C entry points of the simulation pipeline: build the views once, run the core under `guard`.
 
 use super::errmem;
-use super::globals::*;
 use super::guard;
 use crate::abi::view::{Data, EngineError, Model, ModelMut};
 use crate::abi::*;
@@ -36,43 +35,10 @@ unsafe fn arr3(p: *const f64) -> [f64; 3] {
     [*p, *p.add(1), *p.add(2)]
 }
 
-/// Names of the user callbacks that are set; calling back into C is not supported yet.
+/// The user callback the engine cannot serve yet, if set: mjcb_time (timer durations). The
+/// others are called where 2.2.2 calls them (engine::hooks).
 fn callbacks_set() -> Option<&'static str> {
-    // SAFETY: plain reads of the callback globals, as the C library does.
-    unsafe {
-        let set = [
-            (
-                std::ptr::addr_of!(mjcb_passive).read().is_some(),
-                "mjcb_passive",
-            ),
-            (
-                std::ptr::addr_of!(mjcb_control).read().is_some(),
-                "mjcb_control",
-            ),
-            (
-                std::ptr::addr_of!(mjcb_contactfilter).read().is_some(),
-                "mjcb_contactfilter",
-            ),
-            (
-                std::ptr::addr_of!(mjcb_sensor).read().is_some(),
-                "mjcb_sensor",
-            ),
-            (std::ptr::addr_of!(mjcb_time).read().is_some(), "mjcb_time"),
-            (
-                std::ptr::addr_of!(mjcb_act_dyn).read().is_some(),
-                "mjcb_act_dyn",
-            ),
-            (
-                std::ptr::addr_of!(mjcb_act_gain).read().is_some(),
-                "mjcb_act_gain",
-            ),
-            (
-                std::ptr::addr_of!(mjcb_act_bias).read().is_some(),
-                "mjcb_act_bias",
-            ),
-        ];
-        set.iter().find(|s| s.0).map(|s| s.1)
-    }
+    crate::capi::globals::time_set().then_some("mjcb_time")
 }
 
 /// Runs a pipeline function on views of (m, d) under `guard`.

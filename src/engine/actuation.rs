@@ -1,10 +1,12 @@
 //! Actuation: clamped controls, gains and biases (fixed, affine, muscle), actuator forces mapped
 //! to joint space, and activation rates of stateful actuators.
 
+use super::hooks;
 use super::linalg::{clip, is_bad, max, mul_mat_t_vec};
 use super::support::warning;
-use super::{disabled, not_implemented, tick, Data, EngineError, Model, MINVAL};
+use super::{disabled, tick, Data, EngineError, Model, MINVAL};
 use crate::abi::*;
+use crate::capi::globals::ActCallback;
 use crate::math::misc::{muscle_bias, muscle_dynamics, muscle_gain};
 
 const GAIN_FIXED: i32 = mjtGain_::mjGAIN_FIXED as i32;
@@ -18,10 +20,10 @@ const DYN_INTEGRATOR: i32 = mjtDyn_::mjDYN_INTEGRATOR as i32;
 const DYN_FILTER: i32 = mjtDyn_::mjDYN_FILTER as i32;
 const DYN_MUSCLE: i32 = mjtDyn_::mjDYN_MUSCLE as i32;
 
-/// Gain of actuator `i` at its current length and velocity.
-fn gain(m: &Model, i: usize, len: f64, vel: f64) -> Result<f64, EngineError> {
+/// Gain of actuator `i` at its current length and velocity; None for a user gain.
+fn gain(m: &Model, i: usize, len: f64, vel: f64) -> Option<f64> {
     let prm = &m.actuator_gainprm()[mjNGAIN * i..mjNGAIN * (i + 1)];
-    Ok(match m.actuator_gaintype()[i] {
+    Some(match m.actuator_gaintype()[i] {
         GAIN_FIXED => prm[0],
         GAIN_AFFINE => prm[0] + prm[1] * len + prm[2] * vel,
         GAIN_MUSCLE => muscle_gain(
@@ -31,14 +33,14 @@ fn gain(m: &Model, i: usize, len: f64, vel: f64) -> Result<f64, EngineError> {
             m.actuator_acc0()[i],
             prm,
         ),
-        _ => return Err(not_implemented("user actuator gain (mjcb_act_gain) is")),
+        _ => return None,
     })
 }
 
-/// Bias of actuator `i` at its current length and velocity.
-fn bias(m: &Model, i: usize, len: f64, vel: f64) -> Result<f64, EngineError> {
+/// Bias of actuator `i` at its current length and velocity; None for a user bias.
+fn bias(m: &Model, i: usize, len: f64, vel: f64) -> Option<f64> {
     let prm = &m.actuator_biasprm()[mjNBIAS * i..mjNBIAS * (i + 1)];
-    Ok(match m.actuator_biastype()[i] {
+    Some(match m.actuator_biastype()[i] {
         BIAS_NONE => 0.0,
         BIAS_AFFINE => prm[0] + prm[1] * len + prm[2] * vel,
         BIAS_MUSCLE => muscle_bias(
@@ -47,18 +49,19 @@ fn bias(m: &Model, i: usize, len: f64, vel: f64) -> Result<f64, EngineError> {
             m.actuator_acc0()[i],
             prm,
         ),
-        _ => return Err(not_implemented("user actuator bias (mjcb_act_bias) is")),
+        _ => return None,
     })
 }
 
-/// Activation rate of stateful actuator `i` with activation `act` and clamped control `ctrl`.
-fn act_rate(m: &Model, i: usize, ctrl: f64, act: f64) -> Result<f64, EngineError> {
+/// Activation rate of stateful actuator `i` with activation `act` and clamped control `ctrl`;
+/// None for user dynamics.
+fn act_rate(m: &Model, i: usize, ctrl: f64, act: f64) -> Option<f64> {
     let prm = &m.actuator_dynprm()[mjNDYN * i..mjNDYN * (i + 1)];
-    Ok(match m.actuator_dyntype()[i] {
+    Some(match m.actuator_dyntype()[i] {
         DYN_INTEGRATOR => ctrl,
         DYN_FILTER => (ctrl - act) / max(MINVAL, prm[0]),
         DYN_MUSCLE => muscle_dynamics(ctrl, act, prm),
-        _ => return Err(not_implemented("user actuator dynamics (mjcb_act_dyn) are")),
+        _ => return None,
     })
 }
 
@@ -96,15 +99,21 @@ pub fn fwd_actuation(m: &Model, d: &mut Data) -> Result<(), EngineError> {
         }
         for i in 0..nu {
             let (len, vel) = (d.actuator_length[i], d.actuator_velocity[i]);
-            let g = gain(m, i, len, vel)?;
+            let top = a.used();
+            let g = gain(m, i, len, vel)
+                .or_else(|| hooks::act(m, d.raw, top, ActCallback::Gain, i))
+                .unwrap_or(1.0);
             let input = if m.actuator_dyntype()[i] == DYN_NONE {
                 ctrl[i]
             } else {
                 d.act[i + na - nu]
             };
-            let mut f = g * input;
-            f += bias(m, i, len, vel)?;
-            d.actuator_force[i] = f;
+            // the force holds gain*input while a user bias is computed, as in 2.2.2
+            d.actuator_force[i] = g * input;
+            let b = bias(m, i, len, vel)
+                .or_else(|| hooks::act(m, d.raw, top, ActCallback::Bias, i))
+                .unwrap_or(0.0);
+            d.actuator_force[i] += b;
         }
         for i in 0..nu {
             if m.actuator_forcelimited()[i] != 0 {
@@ -118,7 +127,10 @@ pub fn fwd_actuation(m: &Model, d: &mut Data) -> Result<(), EngineError> {
         mul_mat_t_vec(d.qfrc_actuator, d.actuator_moment, d.actuator_force, nu, nv);
         for i in nu - na..nu {
             let j = i + na - nu;
-            d.act_dot[j] = act_rate(m, i, ctrl[i], d.act[j])?;
+            let top = a.used();
+            d.act_dot[j] = act_rate(m, i, ctrl[i], d.act[j])
+                .or_else(|| hooks::act(m, d.raw, top, ActCallback::Dyn, i))
+                .unwrap_or(0.0);
         }
         Ok(())
     })?;

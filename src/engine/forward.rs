@@ -211,6 +211,7 @@ pub fn forward_skip(
     skipsensor: bool,
 ) -> Result<(), EngineError> {
     pos_vel_stages(m, d, skipstage, skipsensor, fwd_position, fwd_velocity)?;
+    super::hooks::control(m, d);
     fwd_actuation(m, d)?;
     fwd_acceleration(m, d)?;
     fwd_constraint(m, d)?;
@@ -274,6 +275,7 @@ pub fn step1(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     fwd_velocity(m, d)?;
     sensor_vel(m, d)?;
     energy_vel(m, d)?;
+    super::hooks::control(m, d);
     tick(d, mjTIMER_STEP);
     Ok(())
 }

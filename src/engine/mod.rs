@@ -9,6 +9,7 @@ pub mod contact;
 pub mod derivative;
 pub mod fluid;
 pub mod forward;
+pub mod hooks;
 pub mod inertia;
 pub mod integrate;
 pub mod inverse;

@@ -53,5 +53,7 @@ pub fn passive(m: &Model, d: &mut Data) -> Result<(), EngineError> {
             add_to_scl(f, &d.ten_J[i * nv..(i + 1) * nv], frc);
         }
     }
-    super::fluid::fluid(m, d)
+    super::fluid::fluid(m, d)?;
+    super::hooks::passive(m, d);
+    Ok(())
 }

@@ -372,9 +372,15 @@ pub fn sensor_acc(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     finish_stage(m, d, ACC)
 }
 
-/// Noise (when enabled) and cutoff for the sensors of `stage`. User sensors would be filled
-/// here by mjcb_sensor, which the C entry points refuse to run with for now.
+/// User sensors of `stage` (mjcb_sensor), then noise (when enabled) and cutoff.
 fn finish_stage(m: &Model, d: &mut Data, stage: i32) -> Result<(), EngineError> {
+    let user = (0..m.raw.nsensor as usize).any(|i| {
+        m.sensor_type()[i] == mjtSensor_::mjSENS_USER as i32 && m.sensor_needstage()[i] == stage
+    });
+    if user {
+        let top = d.arena.used();
+        super::hooks::sensor(m, d, top, stage);
+    }
     if enabled(m, mjtEnableBit_::mjENBL_SENSORNOISE) {
         add_noise(m, d, stage)?;
     }

@@ -152,9 +152,11 @@ fn dedup_box_box(con: &mut [ContactGeom], n: usize) -> usize {
 
 /// Tests one geom pair (mj_collideGeoms): `pair` is the explicit pair's index, if any.
 /// Returns Ok(false) when the contact buffer is full (2.2.2 stops adding then).
+/// `top`: the stack in use (a user contact filter allocates above it).
 fn collide_geoms(
     m: &Model,
     d: &mut Data,
+    top: usize,
     g1: usize,
     g2: usize,
     pair: Option<usize>,
@@ -168,8 +170,11 @@ fn collide_geoms(
     if !narrow::has_collider(t1, t2) {
         return Ok(true);
     }
-    if pair.is_none() && filtered(m, g1, g2) {
-        return Ok(true);
+    if pair.is_none() {
+        let user = crate::engine::hooks::contact_filter(m, d, top, g1, g2);
+        if user.unwrap_or_else(|| filtered(m, g1, g2)) {
+            return Ok(true);
+        }
     }
     let (margin, gap) = match pair {
         None => (
@@ -273,7 +278,7 @@ pub fn collision(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     if m.raw.opt.collision == mjtCollision_::mjCOL_PAIR as i32 {
         for p in 0..npair {
             let (g1, g2) = (m.pair_geom1()[p] as usize, m.pair_geom2()[p] as usize);
-            collide_geoms(m, d, g1, g2, Some(p))?;
+            collide_geoms(m, d, d.arena.used(), g1, g2, Some(p))?;
         }
         return Ok(());
     }
@@ -294,7 +299,7 @@ pub fn collision(m: &Model, d: &mut Data) -> Result<(), EngineError> {
                         m.pair_geom1()[pairadr] as usize,
                         m.pair_geom2()[pairadr] as usize,
                     );
-                    collide_geoms(m, d, g1, g2, Some(pairadr))?;
+                    collide_geoms(m, d, a.used(), g1, g2, Some(pairadr))?;
                     pairadr += 1;
                 }
             }
@@ -317,7 +322,7 @@ pub fn collision(m: &Model, d: &mut Data) -> Result<(), EngineError> {
                             (p1 == g1 && p2 == g2) || (p1 == g2 && p2 == g1)
                         });
                     if !listed {
-                        collide_geoms(m, d, g1, g2, None)?;
+                        collide_geoms(m, d, a.used(), g1, g2, None)?;
                     }
                 }
             }
@@ -328,7 +333,7 @@ pub fn collision(m: &Model, d: &mut Data) -> Result<(), EngineError> {
                     m.pair_geom1()[pairadr] as usize,
                     m.pair_geom2()[pairadr] as usize,
                 );
-                collide_geoms(m, d, g1, g2, Some(pairadr))?;
+                collide_geoms(m, d, a.used(), g1, g2, Some(pairadr))?;
                 pairadr += 1;
             }
         }

@@ -1,0 +1,89 @@
+// User callbacks (tests/callbacks.rs): every mjcb_* but mjcb_time installed with deterministic
+// effects, 500 steps of models/extra/callbacks.xml; prints the state, sensors, contacts and how
+// often each callback ran, identical on both libraries.
+#include <math.h>
+#include <mujoco/mujoco.h>
+#include <stdio.h>
+
+static int calls[6];
+
+static void control(const mjModel* m, mjData* d) {
+  calls[0]++;
+  d->ctrl[0] = 0.5 * cos(2 * d->time);
+  d->ctrl[1] = sin(3 * d->time);
+}
+
+static void passive(const mjModel* m, mjData* d) {
+  calls[1]++;
+  for (int i = 0; i < m->nv; i++) d->qfrc_passive[i] -= 0.05 * d->qvel[i];
+}
+
+static mjtNum gain(const mjModel* m, const mjData* d, int id) {
+  calls[2]++;
+  return 2.0 + 0.1 * d->actuator_length[id];
+}
+
+static mjtNum bias(const mjModel* m, const mjData* d, int id) {
+  calls[3]++;
+  return -0.5 * d->actuator_velocity[id] + 0.01 * d->actuator_force[id];
+}
+
+static mjtNum dyn(const mjModel* m, const mjData* d, int id) {
+  calls[4]++;
+  int j = id - (m->nu - m->na);
+  return (d->ctrl[id] - d->act[j]) / 0.1;
+}
+
+static void sensor(const mjModel* m, mjData* d, int stage) {
+  calls[5]++;
+  for (int i = 0; i < m->nsensor; i++) {
+    if (m->sensor_type[i] != mjSENS_USER || m->sensor_needstage[i] != stage) continue;
+    mjtNum* out = d->sensordata + m->sensor_adr[i];
+    if (stage == mjSTAGE_VEL) {
+      out[0] = d->qvel[0] * 2;
+      out[1] = d->cvel[6 + 2];
+    } else {
+      out[0] = d->qacc[1] + d->qfrc_constraint[0];
+    }
+  }
+}
+
+// discard contacts of geoms with odd id sums
+static int filter(const mjModel* m, mjData* d, int g1, int g2) { return (g1 + g2) % 2; }
+
+int main(int argc, char** argv) {
+  char err[1000] = "";
+  mjModel* m = mj_loadXML(argv[1], NULL, err, sizeof err);
+  if (!m) {
+    printf("load error: %s\n", err);
+    return 1;
+  }
+  mjData* d = mj_makeData(m);
+  mjcb_control = control;
+  mjcb_passive = passive;
+  mjcb_act_gain = gain;
+  mjcb_act_bias = bias;
+  mjcb_act_dyn = dyn;
+  mjcb_sensor = sensor;
+  mjcb_contactfilter = filter;
+  for (int s = 1; s <= 500; s++) {
+    mj_step(m, d);
+    if (s % 50 == 0) {
+      printf("step %d time %.17g ncon %d\n", s, d->time, d->ncon);
+      for (int i = 0; i < m->nq; i++) printf(" %.17g", d->qpos[i]);
+      printf("\n");
+      for (int i = 0; i < m->nv; i++) printf(" %.17g", d->qvel[i]);
+      printf("\n");
+      for (int i = 0; i < m->na; i++) printf(" %.17g", d->act[i]);
+      for (int i = 0; i < m->nsensordata; i++) printf(" %.17g", d->sensordata[i]);
+      for (int i = 0; i < m->nu; i++) printf(" %.17g", d->actuator_force[i]);
+      printf("\n");
+    }
+  }
+  printf("calls: control %d passive %d gain %d bias %d dyn %d sensor %d\n", calls[0], calls[1],
+         calls[2], calls[3], calls[4], calls[5]);
+  mj_resetCallbacks();
+  mj_deleteData(d);
+  mj_deleteModel(m);
+  return 0;
+}
