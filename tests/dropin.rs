@@ -107,3 +107,82 @@ fn testspeed_runs_on_ours() {
         text(&ours.stderr)
     );
 }
+
+const DERIVATIVE: &str = "/usr/bin/mujoco-derivative";
+
+/// Debian's prebuilt mujoco-derivative, unmodified, on ours: its finite-difference
+/// derivatives of forward and inverse dynamics agree with the reference's (the printed
+/// accuracy table is identical); the timing lines are reported.
+#[test]
+fn derivative_runs_on_ours() {
+    require_reference();
+    assert!(
+        Path::new(DERIVATIVE).exists(),
+        "{DERIVATIVE} missing: install libmujoco-samples"
+    );
+    our_lib();
+    let ld = lib_dir()
+        .canonicalize()
+        .unwrap()
+        .to_string_lossy()
+        .to_string();
+    let humanoid = corpus_files()
+        .into_iter()
+        .find(|f| f.ends_with("model/humanoid/humanoid.xml"))
+        .map(|f| f.to_string_lossy().into_owned());
+    let models = [
+        Some(model("arm3.xml")),
+        Some(model("extra/contact_primitives.xml")),
+        humanoid,
+    ];
+    let mut summary = String::new();
+    for m in models.into_iter().flatten() {
+        let args = [m.as_str(), "1", "20", "3", "5", "50", "1e-6"];
+        let reference = run(Path::new(DERIVATIVE), &args, &[], 300);
+        let ours = run(
+            Path::new(DERIVATIVE),
+            &args,
+            &[("LD_LIBRARY_PATH", &ld)],
+            300,
+        );
+        let (r, o) = (text(&reference.stdout), text(&ours.stdout));
+        assert!(
+            reference.status.success(),
+            "reference mujoco-derivative failed on {m}:\n{r}"
+        );
+        assert!(
+            ours.status.success(),
+            "mujoco-derivative on ours failed on {m}:\n{o}{}",
+            text(&ours.stderr)
+        );
+        let timing = |l: &&str| l.starts_with("inverse :") || l.starts_with("forward :");
+        let strip = |s: &str| {
+            s.lines()
+                .filter(|l| !timing(l))
+                .collect::<Vec<_>>()
+                .join("\n")
+        };
+        assert_eq!(strip(&r), strip(&o), "derivatives differ on {m}");
+        let times = |s: &str| {
+            s.lines()
+                .filter(timing)
+                .map(str::trim)
+                .collect::<Vec<_>>()
+                .join(", ")
+        };
+        let name = Path::new(&m)
+            .file_name()
+            .unwrap()
+            .to_string_lossy()
+            .to_string();
+        summary.push_str(&format!(
+            "  {name}: accuracy table identical; reference {}; ours {}\n",
+            times(&r),
+            times(&o)
+        ));
+    }
+    report(
+        "dropin-derivative",
+        &format!("drop-in: mujoco-derivative on ours (LD_LIBRARY_PATH)\n{summary}"),
+    );
+}
