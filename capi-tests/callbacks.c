@@ -48,6 +48,10 @@ static void sensor(const mjModel* m, mjData* d, int stage) {
   }
 }
 
+// a clock that ticks once per call: timer durations count the calls
+static mjtNum clock_ticks = 0;
+static mjtNum tick_clock(void) { return clock_ticks += 1; }
+
 // discard contacts of geoms with odd id sums
 static int filter(const mjModel* m, mjData* d, int g1, int g2) { return (g1 + g2) % 2; }
 
@@ -66,6 +70,7 @@ int main(int argc, char** argv) {
   mjcb_act_dyn = dyn;
   mjcb_sensor = sensor;
   mjcb_contactfilter = filter;
+  mjcb_time = tick_clock;
   for (int s = 1; s <= 500; s++) {
     mj_step(m, d);
     if (s % 50 == 0) {
@@ -80,6 +85,12 @@ int main(int argc, char** argv) {
       printf("\n");
     }
   }
+  for (int i = 0; i < mjNTIMER; i++)
+    printf("timer %d: %.17g over %d\n", i, d->timer[i].duration, d->timer[i].number);
+  mj_inverse(m, d);
+  mj_step1(m, d);
+  mj_step2(m, d);
+  printf("after inverse, step1, step2: clock %.17g\n", clock_ticks);
   printf("calls: control %d passive %d gain %d bias %d dyn %d sensor %d\n", calls[0], calls[1],
          calls[2], calls[3], calls[4], calls[5]);
   mj_resetCallbacks();

@@ -35,12 +35,6 @@ unsafe fn arr3(p: *const f64) -> [f64; 3] {
     [*p, *p.add(1), *p.add(2)]
 }
 
-/// The user callback the engine cannot serve yet, if set: mjcb_time (timer durations). The
-/// others are called where 2.2.2 calls them (engine::hooks).
-fn callbacks_set() -> Option<&'static str> {
-    crate::capi::globals::time_set().then_some("mjcb_time")
-}
-
 /// Runs a pipeline function on views of (m, d) under `guard`.
 unsafe fn run<R>(
     name: &str,
@@ -54,11 +48,6 @@ unsafe fn run<R>(
         return fallback;
     }
     guard(name, fallback, || {
-        if let Some(cb) = callbacks_set() {
-            return Err(EngineError(format!(
-                "{name}: callbacks ({cb}) are not implemented yet"
-            )));
-        }
         let mv = Model::new(&*m);
         let mut dv = Data::new(&*m, &mut *d);
         f(&mv, &mut dv)
@@ -365,11 +354,6 @@ pub unsafe extern "C" fn mjd_transitionFD(
         return;
     }
     guard("mjd_transitionFD", (), || {
-        if let Some(cb) = callbacks_set() {
-            return Err(EngineError(format!(
-                "mjd_transitionFD: callbacks ({cb}) are not implemented yet"
-            )));
-        }
         let mv = Model::new(&*m);
         let (nv, na, nu) = (mv.raw.nv as usize, mv.raw.na as usize, mv.raw.nu as usize);
         let (ndx, ns) = (2 * nv + na, mv.raw.nsensordata as usize);

@@ -67,6 +67,7 @@ fn act_rate(m: &Model, i: usize, ctrl: f64, act: f64) -> Option<f64> {
 
 /// actuator_force, qfrc_actuator, act_dot (mj_fwdActuation).
 pub fn fwd_actuation(m: &Model, d: &mut Data) -> Result<(), EngineError> {
+    let start = super::now();
     let nv = m.raw.nv as usize;
     let nu = m.raw.nu as usize;
     let na = m.raw.na as usize;
@@ -134,6 +135,6 @@ pub fn fwd_actuation(m: &Model, d: &mut Data) -> Result<(), EngineError> {
         }
         Ok(())
     })?;
-    tick(d, mjtTimer_::mjTIMER_ACTUATION);
+    tick(d, mjtTimer_::mjTIMER_ACTUATION, start);
     Ok(())
 }

@@ -14,7 +14,7 @@ use super::sensor::{sensor_acc, sensor_pos, sensor_vel};
 use super::support::{energy_pos, energy_vel, reset_data, warning};
 use super::transmission::transmission;
 use super::velocity::com_vel;
-use super::{enabled, tick, Data, EngineError, Model};
+use super::{enabled, now, tick, Data, EngineError, Model};
 use crate::abi::*;
 use mjtTimer_::*;
 
@@ -22,27 +22,34 @@ pub use super::tendon::tendon;
 
 /// Position-dependent stage (mj_fwdPosition).
 pub fn fwd_position(m: &Model, d: &mut Data) -> Result<(), EngineError> {
+    let start = now();
+    let mut t = now();
     kinematics(m, d)?;
     com_pos(m, d)?;
     camlight(m, d, false);
     tendon(m, d)?;
-    tick(d, mjTIMER_POS_KINEMATICS);
+    tick(d, mjTIMER_POS_KINEMATICS, t);
+    t = now();
     crb(m, d, true);
     factor_m(m, d)?;
-    tick(d, mjTIMER_POS_INERTIA);
+    tick(d, mjTIMER_POS_INERTIA, t);
+    t = now();
     collision(m, d)?;
-    tick(d, mjTIMER_POS_COLLISION);
+    tick(d, mjTIMER_POS_COLLISION, t);
+    t = now();
     make_constraint(m, d)?;
     transmission(m, d)?;
-    tick(d, mjTIMER_POS_MAKE);
+    tick(d, mjTIMER_POS_MAKE, t);
+    t = now();
     project_constraint(m, d)?;
-    tick(d, mjTIMER_POS_PROJECT);
-    tick(d, mjTIMER_POSITION);
+    tick(d, mjTIMER_POS_PROJECT, t);
+    tick(d, mjTIMER_POSITION, start);
     Ok(())
 }
 
 /// Velocity-dependent stage (mj_fwdVelocity).
 pub fn fwd_velocity(m: &Model, d: &mut Data) -> Result<(), EngineError> {
+    let start = now();
     let (nu, nv) = (m.raw.nu as usize, m.raw.nv as usize);
     super::tendon::tendon_velocity(m, d);
     mul_mat_vec(d.actuator_velocity, d.actuator_moment, d.qvel, nu, nv);
@@ -50,7 +57,7 @@ pub fn fwd_velocity(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     passive(m, d)?;
     reference_constraint(m, d);
     rne_bias(m, d)?;
-    tick(d, mjTIMER_VELOCITY);
+    tick(d, mjTIMER_VELOCITY, start);
     Ok(())
 }
 
@@ -115,6 +122,7 @@ pub fn xfrc_accumulate(m: &Model, d: &mut Data, qfrc: &mut [f64]) -> Result<(), 
 
 /// qfrc_smooth and qacc_smooth (mj_fwdAcceleration).
 pub fn fwd_acceleration(m: &Model, d: &mut Data) -> Result<(), EngineError> {
+    let start = now();
     let nv = m.raw.nv as usize;
     for i in 0..nv {
         d.qfrc_smooth[i] = d.qfrc_passive[i] - d.qfrc_bias[i];
@@ -126,7 +134,7 @@ pub fn fwd_acceleration(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     d.qfrc_smooth = smooth;
     r?;
     solve_ld(m, d.qacc_smooth, Some(d.qfrc_smooth), 1, d.qLD, d.qLDiagInv);
-    tick(d, mjTIMER_ACCELERATION);
+    tick(d, mjTIMER_ACCELERATION, start);
     Ok(())
 }
 
@@ -210,6 +218,7 @@ pub fn forward_skip(
     skipstage: i32,
     skipsensor: bool,
 ) -> Result<(), EngineError> {
+    let start = now();
     pos_vel_stages(m, d, skipstage, skipsensor, fwd_position, fwd_velocity)?;
     super::hooks::control(m, d);
     fwd_actuation(m, d)?;
@@ -218,7 +227,7 @@ pub fn forward_skip(
     if !skipsensor {
         sensor_acc(m, d)?;
     }
-    tick(d, mjTIMER_FORWARD);
+    tick(d, mjTIMER_FORWARD, start);
     Ok(())
 }
 
@@ -246,6 +255,7 @@ pub fn step_skip(
     skipstage: i32,
     skipsensor: bool,
 ) -> Result<(), EngineError> {
+    let start = now();
     check_pos(m, d)?;
     check_vel(m, d)?;
     forward_skip(m, d, skipstage, skipsensor)?;
@@ -261,12 +271,13 @@ pub fn step_skip(
         }
         _ => return Err(EngineError("Invalid integrator".into())),
     }
-    tick(d, mjTIMER_STEP);
+    tick(d, mjTIMER_STEP, start);
     Ok(())
 }
 
 /// First half of mj_step, before the user sets controls and applied forces (mj_step1).
 pub fn step1(m: &Model, d: &mut Data) -> Result<(), EngineError> {
+    let start = now();
     check_pos(m, d)?;
     check_vel(m, d)?;
     fwd_position(m, d)?;
@@ -276,12 +287,13 @@ pub fn step1(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     sensor_vel(m, d)?;
     energy_vel(m, d)?;
     super::hooks::control(m, d);
-    tick(d, mjTIMER_STEP);
+    tick(d, mjTIMER_STEP, start);
     Ok(())
 }
 
 /// Second half of mj_step: actuation to integration; RK4 falls back to Euler (mj_step2).
 pub fn step2(m: &Model, d: &mut Data) -> Result<(), EngineError> {
+    let start = now();
     fwd_actuation(m, d)?;
     fwd_acceleration(m, d)?;
     fwd_constraint(m, d)?;
@@ -295,6 +307,6 @@ pub fn step2(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     }
     // step2 does not count as a separate step
     d.raw.timer[mjTIMER_STEP as usize].number -= 1;
-    tick(d, mjTIMER_STEP);
+    tick(d, mjTIMER_STEP, start);
     Ok(())
 }

@@ -10,27 +10,32 @@ use super::linalg::dot;
 use super::rne::rne_with;
 use super::sensor::sensor_acc;
 use super::transmission::transmission;
-use super::{tick, Data, EngineError, Model};
+use super::{now, tick, Data, EngineError, Model};
 use crate::abi::*;
 use mjtTimer_::*;
 
 /// Position-dependent stage of inverse dynamics; transmission comes with the kinematics here
 /// and there is no constraint projection (mj_invPosition).
 pub fn inv_position(m: &Model, d: &mut Data) -> Result<(), EngineError> {
+    let start = now();
+    let mut t = now();
     kinematics(m, d)?;
     com_pos(m, d)?;
     camlight(m, d, false);
     tendon(m, d)?;
     transmission(m, d)?;
-    tick(d, mjTIMER_POS_KINEMATICS);
+    tick(d, mjTIMER_POS_KINEMATICS, t);
+    t = now();
     crb(m, d, true);
     factor_m(m, d)?;
-    tick(d, mjTIMER_POS_INERTIA);
+    tick(d, mjTIMER_POS_INERTIA, t);
+    t = now();
     collision(m, d)?;
-    tick(d, mjTIMER_POS_COLLISION);
+    tick(d, mjTIMER_POS_COLLISION, t);
+    t = now();
     make_constraint(m, d)?;
-    tick(d, mjTIMER_POS_MAKE);
-    tick(d, mjTIMER_POSITION);
+    tick(d, mjTIMER_POS_MAKE, t);
+    tick(d, mjTIMER_POSITION, start);
     Ok(())
 }
 
@@ -41,6 +46,7 @@ pub fn inv_velocity(m: &Model, d: &mut Data) -> Result<(), EngineError> {
 
 /// Constraint forces that produce qacc (mj_invConstraint); zero without constraints.
 pub fn inv_constraint(m: &Model, d: &mut Data) -> Result<(), EngineError> {
+    let start = now();
     let nefc = d.raw.nefc as usize;
     if nefc == 0 {
         d.qfrc_constraint.fill(0.0);
@@ -54,7 +60,7 @@ pub fn inv_constraint(m: &Model, d: &mut Data) -> Result<(), EngineError> {
             super::constraint::constraint_update(m, d, jar, false, false).map(|_| ())
         })?;
     }
-    tick(d, mjTIMER_CONSTRAINT);
+    tick(d, mjTIMER_CONSTRAINT, start);
     Ok(())
 }
 
@@ -65,6 +71,7 @@ pub fn inverse_skip(
     skipstage: i32,
     skipsensor: bool,
 ) -> Result<(), EngineError> {
+    let start = now();
     super::forward::pos_vel_stages(m, d, skipstage, skipsensor, inv_position, inv_velocity)?;
     inv_constraint(m, d)?;
     let nv = m.raw.nv as usize;
@@ -83,7 +90,7 @@ pub fn inverse_skip(
         d.qfrc_inverse[i] +=
             m.dof_armature()[i] * d.qacc[i] - d.qfrc_passive[i] - d.qfrc_constraint[i];
     }
-    tick(d, mjTIMER_INVERSE);
+    tick(d, mjTIMER_INVERSE, start);
     Ok(())
 }
 

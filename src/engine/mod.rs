@@ -57,8 +57,15 @@ pub fn enabled(m: &Model, flag: mjtEnableBit_) -> bool {
 }
 
 /// Counts one pass through a timed stage (no timer callback: durations stay 0).
-pub fn tick(d: &mut Data, timer: mjtTimer_) {
-    d.raw.timer[timer as usize].number += 1;
+pub fn tick(d: &mut Data, timer: mjtTimer_, start: f64) {
+    let t = &mut d.raw.timer[timer as usize];
+    t.duration += now() - start;
+    t.number += 1;
+}
+
+/// The user's clock (mjcb_time), 0 without one: timer durations are differences of it.
+pub fn now() -> f64 {
+    crate::capi::globals::call_time().unwrap_or(0.0)
 }
 
 /// Shorthand for a "not implemented" error.

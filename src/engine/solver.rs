@@ -59,6 +59,7 @@ fn save_stats(
 
 /// mj_fwdConstraint: qacc, efc_force and qfrc_constraint from the selected solver.
 pub fn fwd_constraint(m: &Model, d: &mut Data) -> Result<(), EngineError> {
+    let start = super::now();
     let nv = m.raw.nv as usize;
     let nefc = d.raw.nefc as usize;
     if nefc == 0 {
@@ -90,7 +91,7 @@ pub fn fwd_constraint(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     if noslip_iter > 0 {
         with_arena(d, |d, a| noslip(m, d, a, noslip_iter))?;
     }
-    tick(d, mjtTimer_::mjTIMER_CONSTRAINT);
+    tick(d, mjtTimer_::mjTIMER_CONSTRAINT, start);
     Ok(())
 }
 
