@@ -352,18 +352,18 @@ int mj_deleteFileVFS(mjVFS *vfs, const char *filename);
 
 void mj_deleteVFS(mjVFS *vfs);
 
-int mj_saveLastXML(const char *filename, const mjModel *m, char *error, int error_sz);
-
-void mj_freeLastXML(void);
-
-int mj_printSchema(const char *filename, char *buffer, int buffer_sz, int flg_html, int flg_pad);
-
 int mj_setLengthRange(mjModel *m,
                       mjData *d,
                       int index,
                       const mjLROpt *opt,
                       char *error,
                       int error_sz);
+
+int mj_saveLastXML(const char *filename, const mjModel *m, char *error, int error_sz);
+
+void mj_freeLastXML(void);
+
+int mj_printSchema(const char *filename, char *buffer, int buffer_sz, int flg_html, int flg_pad);
 
 void mj_printFormattedModel(const mjModel *m, const char *filename, const char *float_format);
 

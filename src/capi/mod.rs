@@ -6,6 +6,7 @@ pub mod engine;
 pub mod errmem;
 pub mod globals;
 pub mod io;
+pub mod lengthrange;
 #[rustfmt::skip]
 pub mod pending;
 #[rustfmt::skip]

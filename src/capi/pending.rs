@@ -24,9 +24,3 @@ pub unsafe extern "C" fn mj_printSchema(filename: *const c_char, buffer: *mut c_
     0 as c_int
 }
 
-#[no_mangle]
-pub unsafe extern "C" fn mj_setLengthRange(m: *mut mjModel, d: *mut mjData, index: c_int, opt: *const mjLROpt, error: *mut c_char, error_sz: c_int) -> c_int {
-    pending("mj_setLengthRange");
-    0 as c_int
-}
-

@@ -153,6 +153,10 @@ unsafe fn load(filename: *const c_char, vfs: *const mjVFS) -> Result<*mut mjMode
         let mut mm = ModelMut::new(&mut *m);
         compiler::auto_spring_damper(&compiled, &mut mm);
     }
+    if let Err(e) = crate::capi::lengthrange::compile_length_ranges(m, &compiled.lropt) {
+        crate::abi::alloc::delete_model(m);
+        return Err(format!("Error: {e}"));
+    }
     compiler::finish(&compiled, &mut (*m).stat);
     // SAFETY: m came from make_model.
     if let Some(msg) = crate::abi::validate::validate_references(crate::abi::view::Model::new(&*m))

@@ -692,6 +692,8 @@ pub struct CompilerOpts {
     pub lr_mode: i32,
     pub lr_useexisting: bool,
     pub lr_uselimit: bool,
+    /// accel, maxforce, timeconst, timestep, inttotal, inteval, tolrange
+    pub lr_numbers: [f64; 7],
 }
 
 impl Default for CompilerOpts {
@@ -711,6 +713,7 @@ impl Default for CompilerOpts {
             lr_mode: 1,
             lr_useexisting: true,
             lr_uselimit: false,
+            lr_numbers: [20.0, 0.0, 1.0, 0.01, 10.0, 2.0, 0.05],
         }
     }
 }

@@ -50,6 +50,8 @@ struct FJoint {
 /// A compiled model, ready to be copied into an allocated `mjModel`.
 pub struct Compiled {
     pub header: mjModel,
+    /// options of the actuator length-range computation (`<compiler><lengthrange>`)
+    pub lropt: crate::abi::mjLROpt,
     pub option: mjOption,
     pub visual: mjVisual,
     pub stat_override: [f64; 4],
@@ -952,33 +954,7 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
         trnid.push(ids);
     }
 
-    // actuator length ranges: existing, or joint/tendon limits; simulation is not available
-    for (i, a) in actuators.iter_mut().enumerate() {
-        let muscle = a.gaintype == 2 || a.biastype == 2;
-        let user = a.gaintype == 3 || a.biastype == 3;
-        let mode = opts.lr_mode;
-        if mode == 0 || (mode == 1 && !muscle) || (mode == 2 && !muscle && !user) {
-            continue;
-        }
-        if opts.lr_useexisting && a.lengthrange[0] < a.lengthrange[1] {
-            continue;
-        }
-        let t = trnid[i][0] as usize;
-        if opts.lr_uselimit {
-            if matches!(a.trntype, 0 | 1) && joints[t].spec.limited != 0 {
-                a.lengthrange = joints[t].spec.range;
-                continue;
-            }
-            if a.trntype == 3 && tendons[t].spec.limited != 0 {
-                a.lengthrange = tendons[t].spec.range;
-                continue;
-            }
-        }
-        return Err(CError::msg(&format!(
-            "actuator {i} needs a lengthrange computed by simulation, which this compiler does not do yet; \
-             give lengthrange explicitly"
-        )));
-    }
+    // actuator length ranges are computed after set_const (capi load: mj_setLengthRange)
 
     // sensors
     let mut csensors = Vec::new();
@@ -1355,8 +1331,22 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
         (5 * a * a + 20 * b).clamp(1000, i32::MAX as i64) as i32
     };
 
+    let n = &opts.lr_numbers;
+    let lropt = crate::abi::mjLROpt {
+        mode: opts.lr_mode,
+        useexisting: opts.lr_useexisting as i32,
+        uselimit: opts.lr_uselimit as i32,
+        accel: n[0],
+        maxforce: n[1],
+        timeconst: n[2],
+        timestep: n[3],
+        inttotal: n[4],
+        inteval: n[5],
+        tolrange: n[6],
+    };
     Ok(Compiled {
         header: h,
+        lropt,
         option: spec.option,
         visual: spec.visual,
         stat_override: spec.stat_override,

@@ -16,6 +16,7 @@ pub mod inverse;
 pub mod jacdif;
 pub mod jacobian;
 pub mod kinematics;
+pub mod lengthrange;
 pub mod linalg;
 pub mod passive;
 pub mod print;

@@ -1148,8 +1148,7 @@ fn read_compiler(spec: &mut ModelSpec, el: &Element) -> R<()> {
         if let Some(b) = boolean(lr, "uselimit")? {
             c.lr_uselimit = b;
         }
-        let mut x = 0.0;
-        for n in [
+        for (k, n) in [
             "accel",
             "maxforce",
             "timeconst",
@@ -1157,8 +1156,11 @@ fn read_compiler(spec: &mut ModelSpec, el: &Element) -> R<()> {
             "inttotal",
             "inteval",
             "tolrange",
-        ] {
-            num(lr, n, &mut x)?;
+        ]
+        .into_iter()
+        .enumerate()
+        {
+            num(lr, n, &mut c.lr_numbers[k])?;
         }
     }
     Ok(())
