@@ -51,7 +51,7 @@ pub unsafe fn set_length_range(
     }
     // one view per step, as 2.2.2's calls of mj_step1 and mj_step2 (scratch is per call)
     let mut ext = [(0.0, 0.0); 2];
-    for side in 0..2 {
+    for (side, out) in ext.iter_mut().enumerate() {
         begin_side(&Model::new(&*m), &mut Data::new(&*m, &mut *d));
         let mut e = Extremes::default();
         while (*d).time < opt.inttotal {
@@ -63,7 +63,7 @@ pub unsafe fn set_length_range(
             }
             e.update((*d).time, len, opt);
         }
-        ext[side] = (e.min, e.max);
+        *out = (e.min, e.max);
         put(side, if side == 0 { e.min } else { e.max });
     }
     let lr = [
