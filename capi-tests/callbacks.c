@@ -91,6 +91,19 @@ int main(int argc, char** argv) {
   mj_step1(m, d);
   mj_step2(m, d);
   printf("after inverse, step1, step2: clock %.17g\n", clock_ticks);
+  // the collision function table, called directly for every geom pair in table order
+  mjContact con[mjMAXCONPAIR];
+  for (int g1 = 0; g1 < m->ngeom; g1++) {
+    for (int g2 = 0; g2 < m->ngeom; g2++) {
+      mjfCollision f = mjCOLLISIONFUNC[m->geom_type[g1]][m->geom_type[g2]];
+      if (!f || g1 == g2) continue;
+      int n = f(m, d, con, g1, g2, 0.5);
+      for (int k = 0; k < n; k++)
+        printf("collide %d %d: %.17g %.17g %.17g %.17g %.17g %.17g %.17g\n", g1, g2, con[k].dist,
+               con[k].pos[0], con[k].pos[1], con[k].pos[2], con[k].frame[0], con[k].frame[1],
+               con[k].frame[2]);
+    }
+  }
   printf("calls: control %d passive %d gain %d bias %d dyn %d sensor %d\n", calls[0], calls[1],
          calls[2], calls[3], calls[4], calls[5]);
   mj_resetCallbacks();

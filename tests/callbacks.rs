@@ -1,7 +1,8 @@
 //! User callbacks: capi-tests/callbacks.c installs mjcb_control, mjcb_passive, mjcb_act_gain,
 //! mjcb_act_bias, mjcb_act_dyn, mjcb_sensor, mjcb_contactfilter and mjcb_time (a counter, so that
 //! timer durations count the clock's calls) and steps a model with user
-//! actuators and sensors and contacts; both libraries must print the same, digit for digit.
+//! actuators and sensors and contacts, then calls mjCOLLISIONFUNC for every geom pair; both
+//! libraries must print the same, digit for digit.
 
 mod common;
 use common::*;

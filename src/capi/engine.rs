@@ -1416,3 +1416,39 @@ pub unsafe extern "C" fn mj_ray(
         Ok(dist)
     })
 }
+
+/// The entries of mjCOLLISIONFUNC: contacts of geoms g1, g2 (types in table order) within
+/// `margin` into `con`, which must hold mjMAXCONPAIR (50); returns their number. Only the
+/// geometric fields (dist, pos, frame) are set, as by 2.2.2's collision functions.
+pub unsafe extern "C" fn collide_pair(
+    m: *const mjModel,
+    d: *const mjData,
+    con: *mut mjContact,
+    g1: c_int,
+    g2: c_int,
+    margin: mjtNum,
+) -> c_int {
+    if con.is_null() || checked_id("mjCOLLISIONFUNC", m, d, g1, |m| m.ngeom).is_none() {
+        return 0;
+    }
+    let Some(g2) = checked_id("mjCOLLISIONFUNC", m, d, g2, |m| m.ngeom) else {
+        return 0;
+    };
+    run_const("mjCOLLISIONFUNC", 0, m, d, |mv, dv| {
+        let (g1, t1, t2) = (g1 as usize, mv.geom_type()[g1 as usize], mv.geom_type()[g2]);
+        if t1 > t2 || !engine::collision::narrow::has_collider(t1, t2) {
+            return Err(EngineError(
+                "mjCOLLISIONFUNC: geom types out of table order".into(),
+            ));
+        }
+        let mut buf = [Default::default(); engine::collision::narrow::MAX_CONTACT_PAIR];
+        let n = engine::collision::narrow::collide(mv, dv, g1, g2, margin, &mut buf);
+        for (k, c) in buf[..n].iter().enumerate() {
+            let out = &mut *con.add(k);
+            out.dist = c.dist;
+            out.pos = c.pos;
+            out.frame[..6].copy_from_slice(&c.frame);
+        }
+        Ok(n as c_int)
+    })
+}

@@ -20,9 +20,26 @@ pub static mut mjcb_act_gain: mjfAct = None;
 #[no_mangle]
 pub static mut mjcb_act_bias: mjfAct = None;
 
-/// Pairwise collision functions by geom type (filled as collision lands).
+/// Pairwise collision functions by geom type, where 2.2.2 has one (upper triangle, not between
+/// planes and height fields); every entry runs the narrow phase of the geoms' own types.
 #[no_mangle]
-pub static mut mjCOLLISIONFUNC: [[mjfCollision; 8]; 8] = [[None; 8]; 8];
+pub static mut mjCOLLISIONFUNC: [[mjfCollision; 8]; 8] = collision_table();
+
+const fn collision_table() -> [[mjfCollision; 8]; 8] {
+    let mut t: [[mjfCollision; 8]; 8] = [[None; 8]; 8];
+    let mut i = 0;
+    while i < 8 {
+        let mut j = i;
+        while j < 8 {
+            if !(i <= 1 && j <= 1) {
+                t[i][j] = Some(super::engine::collide_pair);
+            }
+            j += 1;
+        }
+        i += 1;
+    }
+    t
+}
 
 /// A table of C string constants that C code can index like `const char*[N]`.
 #[repr(transparent)]
