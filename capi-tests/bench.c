@@ -2,10 +2,7 @@
 //   bench STEPS DISABLEFLAGS FILE   loads FILE, ors DISABLEFLAGS into opt.disableflags, resets
 //   (keyframe 0 if any), and times STEPS driven mj_step calls after 100 warm-up steps; prints
 //   "steps/s <rate>", or "error <message>" when the library stops with mju_error.
-#define _POSIX_C_SOURCE 200809L
-#include <math.h>
-#include <mujoco/mujoco.h>
-#include <stdio.h>
+#include "child.h"  // first: it sets the feature macros
 #include <stdlib.h>
 #include <time.h>
 
@@ -20,18 +17,6 @@ static double now(void) {
   struct timespec t;
   clock_gettime(CLOCK_MONOTONIC, &t);
   return t.tv_sec + 1e-9 * t.tv_nsec;
-}
-
-static void drive(const mjModel* m, mjData* d, int s) {
-  for (int i = 0; i < m->nu; i++) {
-    mjtNum x = sin(0.01 * s * (1 + 0.3 * i) + i);
-    if (m->actuator_ctrllimited[i]) {
-      mjtNum lo = m->actuator_ctrlrange[2 * i], hi = m->actuator_ctrlrange[2 * i + 1];
-      d->ctrl[i] = lo + (hi - lo) * (0.5 + 0.45 * x);
-    } else {
-      d->ctrl[i] = x;
-    }
-  }
 }
 
 int main(int argc, char** argv) {
@@ -52,12 +37,12 @@ int main(int argc, char** argv) {
   mjData* d = mj_makeData(m);
   if (m->nkey > 0) mj_resetDataKeyframe(m, d, 0);
   for (int s = 0; s < 100; s++) {
-    drive(m, d, s);
+    drive_controls(m, d, s);
     mj_step(m, d);
   }
   double t0 = now();
   for (int s = 0; s < steps; s++) {
-    drive(m, d, s);
+    drive_controls(m, d, s);
     mj_step(m, d);
   }
   double dt = now() - t0;

@@ -2,15 +2,11 @@
 //   loader verdict FILE...   one line per file: "load <sizes>", "reject <message>",
 //                            "crash <signal>" or "hang" (each load in a child, 20 s limit)
 //   loader time N FILE...    loads every file N times; prints the seconds taken
-#define _DEFAULT_SOURCE
-#include <mujoco/mujoco.h>
-#include <signal.h>
-#include <stdio.h>
+#include "child.h"  // first: it sets the feature macros
 #include <stdlib.h>
 #include <string.h>
-#include <sys/wait.h>
 #include <time.h>
-#include <unistd.h>
+
 
 static double now(void) {
   struct timespec t;
@@ -28,51 +24,20 @@ static void one_line(char* s) {
   }
 }
 
-static void verdict(const char* file) {
-  int fd[2];
-  if (pipe(fd)) return;
-  fflush(stdout);
-  pid_t pid = fork();
-  if (pid == 0) {
-    close(fd[0]);
-    dup2(fd[1], 1);
-    char err[1000] = "";
-    mjModel* m = mj_loadXML(file, NULL, err, sizeof err);
-    if (m) {
-      printf("load nq=%d nv=%d nu=%d na=%d nbody=%d njnt=%d ngeom=%d nsite=%d nmesh=%d ntendon=%d "
-             "nsensor=%d neq=%d nkey=%d\n",
-             m->nq, m->nv, m->nu, m->na, m->nbody, m->njnt, m->ngeom, m->nsite, m->nmesh,
-             m->ntendon, m->nsensor, m->neq, m->nkey);
-      mj_deleteModel(m);
-    } else {
-      one_line(err);
-      printf("reject %s\n", err);
-    }
-    fflush(stdout);
-    _exit(0);
+// One line: the sizes of the loaded model, or the first line of the error.
+static void load_one(const char* file) {
+  char err[1000] = "";
+  mjModel* m = mj_loadXML(file, NULL, err, sizeof err);
+  if (m) {
+    printf("load nq=%d nv=%d nu=%d na=%d nbody=%d njnt=%d ngeom=%d nsite=%d nmesh=%d ntendon=%d "
+           "nsensor=%d neq=%d nkey=%d\n",
+           m->nq, m->nv, m->nu, m->na, m->nbody, m->njnt, m->ngeom, m->nsite, m->nmesh,
+           m->ntendon, m->nsensor, m->neq, m->nkey);
+    mj_deleteModel(m);
+  } else {
+    one_line(err);
+    printf("reject %s\n", err);
   }
-  close(fd[1]);
-  char buf[2000];
-  size_t n = 0;
-  ssize_t r;
-  int ws = 0, done = 0;
-  for (int t = 0; t < 2000 && !done; t++) {
-    if (waitpid(pid, &ws, WNOHANG) == pid) done = 1;
-    else usleep(10000);
-  }
-  if (!done) {
-    kill(pid, SIGKILL);
-    waitpid(pid, &ws, 0);
-    printf("hang\n");
-    close(fd[0]);
-    return;
-  }
-  while (n + 1 < sizeof buf && (r = read(fd[0], buf + n, sizeof buf - 1 - n)) > 0) n += r;
-  buf[n] = 0;
-  close(fd[0]);
-  if (WIFSIGNALED(ws)) printf("crash %d\n", WTERMSIG(ws));
-  else if (n == 0) printf("crash exit %d\n", WEXITSTATUS(ws));
-  else fputs(buf, stdout);
 }
 
 static void quiet(const char* msg) { (void)msg; }
@@ -80,7 +45,7 @@ static void quiet(const char* msg) { (void)msg; }
 int main(int argc, char** argv) {
   if (argc >= 3 && !strcmp(argv[1], "verdict")) {
     mju_user_warning = quiet;
-    for (int i = 2; i < argc; i++) verdict(argv[i]);
+    for (int i = 2; i < argc; i++) in_child(load_one, argv[i], 20);
     return 0;
   }
   if (argc >= 4 && !strcmp(argv[1], "time")) {

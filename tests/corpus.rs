@@ -26,43 +26,27 @@ fn corpus_compiled_models() {
             f.to_string_lossy().to_string(),
             dir.to_string_lossy().to_string(),
         );
-        let r = run(
-            &bin.join("harness-ref"),
-            &["record", &fs, &ds, "--model-only"],
-            &[],
+        let Some((ok, out)) = harness_compare(
+            &bin,
+            &fs,
+            &ds,
+            &["--model-only"],
+            &["--groups", "model"],
             120,
-        );
-        if !r.status.success() {
+        ) else {
             rejected += 1; // include files and deliberately malformed models
             continue;
-        }
-        run(
-            &bin.join("harness-ours"),
-            &["replay", &fs, &ds, "--model-only"],
-            &[],
-            120,
-        );
-        let c = run(
-            &bin.join("harness-ref"),
-            &["compare", &ds, "--groups", "model"],
-            &[],
-            120,
-        );
+        };
         let rel = dirs
             .iter()
             .find_map(|d| f.strip_prefix(d.parent().unwrap_or(d)).ok())
             .unwrap_or(f)
             .display()
             .to_string();
-        if c.status.success() {
+        if ok {
             same.push(rel);
         } else {
-            let why = text(&c.stdout)
-                .lines()
-                .next()
-                .unwrap_or("")
-                .trim()
-                .to_string();
+            let why = out.lines().next().unwrap_or("").trim().to_string();
             differ.push(format!("{rel}: {why}"));
         }
     }

@@ -30,63 +30,37 @@ fn corpus_physics() {
             dir.to_string_lossy().to_string(),
         );
         // the compiled model first: small, tells the size and whether ours loads it
-        let r = run(
-            &bin.join("harness-ref"),
-            &["record", &fs, &ds, "--model-only"],
-            &[],
-            120,
-        );
-        if !r.status.success() {
-            skipped += 1;
-            continue;
-        }
-        run(
-            &bin.join("harness-ours"),
-            &["replay", &fs, &ds, "--model-only"],
-            &[],
-            120,
-        );
-        let c = run(
-            &bin.join("harness-ref"),
-            &["compare", &ds, "--groups", "model"],
-            &[],
-            120,
-        );
         let rel = f.display().to_string();
-        if !c.status.success() {
-            unsupported.push(format!("{rel}: compiler"));
-            continue;
+        match harness_compare(
+            &bin,
+            &fs,
+            &ds,
+            &["--model-only"],
+            &["--groups", "model"],
+            120,
+        ) {
+            None => {
+                skipped += 1;
+                continue;
+            }
+            Some((false, _)) => {
+                unsupported.push(format!("{rel}: compiler"));
+                continue;
+            }
+            Some((true, _)) => {}
         }
         if model_nv(&ds) > MAX_NV {
             skipped += 1;
             continue;
         }
         let groups = "forward,step,collision";
-        let r = run(
-            &bin.join("harness-ref"),
-            &["record", &fs, &ds, "--groups", groups],
-            &[],
-            600,
-        );
-        if !r.status.success() {
+        let g = ["--groups", groups];
+        let Some((ok, out)) = harness_compare(&bin, &fs, &ds, &g, &g, 600) else {
             skipped += 1; // the reference stops on this model
             continue;
-        }
-        run(
-            &bin.join("harness-ours"),
-            &["replay", &fs, &ds, "--groups", groups],
-            &[],
-            600,
-        );
-        let c = run(
-            &bin.join("harness-ref"),
-            &["compare", &ds, "--groups", groups],
-            &[],
-            300,
-        );
-        let out = text(&c.stdout);
+        };
         let _ = std::fs::remove_dir_all(&dir);
-        if c.status.success() {
+        if ok {
             for l in out
                 .lines()
                 .filter(|l| l.contains("check groups pass; worst"))
