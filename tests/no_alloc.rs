@@ -107,6 +107,13 @@ fn stepping_does_not_allocate() {
         "extra/sensors_all",
         "extra/fwdinv_constraints",
         "extra/rangefinder",
+        "extra/contact_primitives",
+        "extra/contact_cg_elliptic_dense_ns5",
+        "extra/contact_newton_elliptic_sparse_ns0",
+        "extra/contact_pgs_elliptic_sparse_ns5",
+        "extra/contact_pgs_pyramidal_dense_ns5",
+        "extra/callbacks",
+        "extra/lengthrange",
     ];
     for name in ["pendulum", "arm3", "freebox", "chain"]
         .into_iter()

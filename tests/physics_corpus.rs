@@ -1,8 +1,9 @@
-//! Full physics over the corpus (common::corpus_dirs): for every model both libraries load,
-//! mj_forward and mj_step at 50 states of the reference's trajectory and collision detection
-//! there (capi-tests/harness groups forward, step, collision), compared within the group
-//! tolerances raised to 1000x the reference's noise floor. A model our engine stops on with
-//! "not implemented" is counted, never one that differs. Report: physics-corpus.txt.
+//! Physics over the corpus (common::corpus_dirs), for every model both libraries load: full
+//! physics (mj_forward, mj_step and collision detection at 50 states of the reference's
+//! trajectory: harness groups forward, step, collision), and smooth dynamics with constraints
+//! and contacts disabled on both sides (forward and the body Jacobians), compared within the
+//! group tolerances raised to 1000x the reference's noise floor. A model our engine stops on
+//! with "not implemented" is counted, never one that differs. Report: physics-corpus.txt.
 
 mod common;
 use common::*;
@@ -22,6 +23,7 @@ fn corpus_physics() {
     let (mut same, mut unsupported, mut skipped) = (Vec::new(), Vec::new(), 0);
     let mut differ = Vec::new();
     let mut worst = 0.0f64;
+    let mut smooth = 0;
     for (i, f) in files.iter().enumerate() {
         let dir = base.join(i.to_string());
         let _ = std::fs::remove_dir_all(&dir);
@@ -52,6 +54,16 @@ fn corpus_physics() {
         if model_nv(&ds) > MAX_NV {
             skipped += 1;
             continue;
+        }
+        // smooth dynamics: constraints and contacts off on both sides
+        let g = ["--groups", "forward,jacBody,jacSite"];
+        let smooth_run = ["--groups", "forward,jacBody,jacSite", "--disable", "3"];
+        match harness_compare(&bin, &fs, &ds, &smooth_run, &g, 600) {
+            Some((true, _)) => smooth += 1,
+            Some((false, out)) if !out.contains("not implemented") => {
+                differ.push(format!("{rel} (constraints and contacts disabled):\n{out}"))
+            }
+            _ => {}
         }
         let groups = "forward,step,collision";
         let g = ["--groups", groups];
@@ -85,7 +97,8 @@ fn corpus_physics() {
     let msg = format!(
         "physics corpus (forward, step, collision at 50 states): {} of {} models at parity \
          (worst relative error {worst:.2e}); {} stop on features not supported yet; {} differ; \
-         {skipped} skipped (reference rejects or stops, or nv > {MAX_NV})\n{}{}",
+         {skipped} skipped (reference rejects or stops, or nv > {MAX_NV}); with constraints and \
+         contacts disabled, forward and Jacobians at parity on {smooth}\n{}{}",
         same.len(),
         same.len() + unsupported.len() + differ.len(),
         unsupported.len(),

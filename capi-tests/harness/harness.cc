@@ -4,7 +4,8 @@
 //   harness-ref  record  MODEL DIR   reference run: model, trajectory, states, all checks -> DIR/ref
 //   harness-ours replay  MODEL DIR   our run: the same checks at the reference's states -> DIR/ours
 //   (record/replay MODEL DIR --model-only: the compiled model only; --groups a,b: those check
-//   groups only, plus forward, which the others read)
+//   groups only, plus forward, which the others read; --disable FLAGS: or FLAGS into
+//   opt.disableflags of every model, e.g. 3 = constraints and contacts off)
 //   harness-ref  compare DIR [-v] [--groups a,b]   worst relative error per quantity, exit 1 on
 //                                    any failure (all groups, or the listed ones)
 //
@@ -36,6 +37,7 @@
 namespace {
 
 std::string g_status;  // status file of the running check group
+int g_disable = 0;     // --disable: flags or-ed into opt.disableflags of every model run
 
 void write_status(const std::string& path, const std::string& text) {
   std::string line = text;  // one line: messages may hold newlines
@@ -100,6 +102,7 @@ mjModel* load(const char* path, std::string& error) {
   char err[1000] = "";
   mjModel* m = mj_loadXML(path, nullptr, err, sizeof err);
   if (!m) error = std::string("mj_loadXML failed: ") + err;
+  else m->opt.disableflags |= g_disable;
   return m;
 }
 
@@ -197,6 +200,7 @@ int replay(const char* model, const std::string& dir, bool model_only, const std
       std::string why = read_status(out + "model.status");
       write_status(out + "traj.note", "on the transplanted reference model, as loading failed (" + why + ")");
       m = transplant_model(refmodel);
+      m->opt.disableflags |= g_disable;
     }
     mjData* d = mj_makeData(m);
     if (!d) return "mj_makeData returned NULL";
@@ -209,6 +213,7 @@ int replay(const char* model, const std::string& dir, bool model_only, const std
     isolated(out + group + ".status", [&, group = group, check = check]() -> std::string {
       if (!have_ref) return "no reference model.bin";
       mjModel* m = transplant_model(refmodel);
+      m->opt.disableflags |= g_disable;
       mjData* d = needs_data(group) ? mj_makeData(m) : nullptr;
       if (needs_data(group) && !d) return "mj_makeData returned NULL";
       Reader states, post;
@@ -286,7 +291,7 @@ bool right_library() {
 
 int usage() {
   std::fprintf(stderr,
-               "usage: harness record|replay MODEL DIR [--model-only] [--groups g1,g2,...] | "
+               "usage: harness record|replay MODEL DIR [--model-only] [--groups g1,g2,...] [--disable FLAGS] | "
                "harness compare DIR [-v] [--groups g1,g2,...]\n");
   return 2;
 }
@@ -317,6 +322,7 @@ int main(int argc, char** argv) {
   for (int i = 4; i < argc; i++) {
     if (!std::strcmp(argv[i], "--model-only")) model_only = true;
     else if (!std::strcmp(argv[i], "--groups") && i + 1 < argc) only = argv[++i];
+    else if (!std::strcmp(argv[i], "--disable") && i + 1 < argc) g_disable = std::atoi(argv[++i]);
     else return usage();
   }
   if (mode == "record") return record(argv[2], dir, model_only, only);
