@@ -48,7 +48,7 @@ pub fn factor_i(
     sqrt_inv: Option<&mut [f64]>,
 ) -> Result<(), EngineError> {
     let nv = m.raw.nv as usize;
-    let madr = m.dof_Madr();
+    let (madr, simple, parent) = (m.dof_Madr(), m.dof_simplenum(), m.dof_parentid());
     qld.copy_from_slice(&mat[..qld.len()]);
     for k in (0..nv).rev() {
         let akk = madr[k] as usize;
@@ -56,11 +56,11 @@ pub fn factor_i(
             warning(raw, mjtWarning_::mjWARN_INERTIA as i32, k as i32)?;
             qld[akk] = MINVAL;
         }
-        if m.dof_simplenum()[k] != 0 {
+        if simple[k] != 0 {
             continue;
         }
         let mut aki = akk + 1;
-        let mut i = m.dof_parentid()[k];
+        let mut i = parent[k];
         while i >= 0 {
             let iu = i as usize;
             let tmp = qld[aki] / qld[akk];
@@ -72,7 +72,7 @@ pub fn factor_i(
                 *x += y * s;
             }
             qld[aki] = tmp;
-            i = m.dof_parentid()[iu];
+            i = parent[iu];
             aki += 1;
         }
     }
