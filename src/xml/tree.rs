@@ -180,10 +180,17 @@ pub fn parse(text: &str) -> Result<Element, String> {
                 }
             }
             Event::Eof => break,
-            Event::Text(t) if stack.is_empty() && !t.iter().all(|b| b.is_ascii_whitespace()) => {
+            // text outside elements is skipped, as tinyxml2 does, unless nothing follows it:
+            // tinyxml2 then reports text without its closing '<'
+            Event::Text(t)
+                if stack.is_empty()
+                    && reader.buffer_position() as usize >= text.len()
+                    && !t.iter().all(|b| b.is_ascii_whitespace()) =>
+            {
+                let start = before + text[before..].len() - text[before..].trim_start().len();
                 return Err(format!(
-                    "XML parse error: text outside the root element\nLine number={}\n",
-                    lines.line(before)
+                    "XML parse error 8:\nError=XML_ERROR_PARSING_TEXT ErrorID=8 (0x8) Line number={}\n",
+                    lines.line(start)
                 ));
             }
             _ => {}
