@@ -455,8 +455,8 @@ pub fn convert(robot: &Element) -> Result<Element, String> {
         out.children.push(body);
         Ok(())
     }
-    for i in 0..links.len() {
-        if parent[i].is_none() {
+    for (i, p) in parent.iter().enumerate() {
+        if p.is_none() {
             build(
                 i,
                 &mut conv,
