@@ -1,6 +1,7 @@
 /* XML I/O driver for tests/xml_io.rs:
  *   xmlio mjb IN OUT.mjb     load IN (MJCF or URDF), save the model as MJB
  *   xmlio save IN OUT.xml    load IN, mj_saveLastXML to OUT
+ *   xmlio changed IN OUT.xml changes the model's timestep, then mj_saveLastXML to OUT
  *   xmlio schema OUT html pad  mj_printSchema to OUT
  * Exit 0 on success; errors on stdout. */
 #include <stdio.h>
@@ -22,7 +23,11 @@ int main(int argc, char** argv) {
     return 1;
   }
   int ok = 1;
-  if (!strcmp(argv[1], "mjb")) {
+  if (!strcmp(argv[1], "changed")) {
+    m->opt.timestep *= 2;
+    ok = mj_saveLastXML(argv[3], m, err, sizeof(err));
+    printf("saved %d: %s\n", ok, err);
+  } else if (!strcmp(argv[1], "mjb")) {
     mj_saveModel(m, argv[3], NULL, 0);
   } else {
     ok = mj_saveLastXML(argv[3], m, err, sizeof(err));

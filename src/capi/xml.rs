@@ -40,8 +40,14 @@ unsafe fn load_text(filename: &str, vfs: *const mjVFS) -> Result<Vec<u8>, String
     })
 }
 
-/// MJCF tree of the last model loaded (what `mj_saveLastXML` writes), as 2.2.2 keeps it.
-static LAST_MODEL: Mutex<Option<tree::Element>> = Mutex::new(None);
+/// The last model loaded, as 2.2.2 keeps it for `mj_saveLastXML`: its MJCF tree and the MJB
+/// image of the model compiled from it.
+struct LastModel {
+    mjcf: tree::Element,
+    image: Vec<u8>,
+}
+
+static LAST_MODEL: Mutex<Option<LastModel>> = Mutex::new(None);
 
 /// The model file (and its includes) to its MJCF tree and model description.
 unsafe fn parse(
@@ -162,7 +168,10 @@ unsafe fn load(filename: *const c_char, vfs: *const mjVFS) -> Result<*mut mjMode
     }
     test_step(m);
     if let Ok(mut last) = LAST_MODEL.lock() {
-        *last = Some(mjcf);
+        *last = Some(LastModel {
+            mjcf,
+            image: crate::abi::mjb::save(&*m),
+        });
     }
     Ok(m)
 }
@@ -203,15 +212,29 @@ pub unsafe extern "C" fn mj_saveLastXML(
     error: *mut c_char,
     error_sz: c_int,
 ) -> c_int {
-    let _ = m;
     let text = match LAST_MODEL.lock() {
-        Ok(last) => last.as_ref().map(writer::to_text),
+        Ok(last) => last.as_ref().map(|l| {
+            // 2.2.2 copies values the user changed in m back into the file; we write the
+            // model as loaded, so a changed (or another) model is refused
+            let same = m
+                .as_ref()
+                .is_none_or(|m| crate::abi::mjb::save(m) == l.image);
+            (writer::to_text(&l.mjcf), same)
+        }),
         Err(_) => None,
     };
-    let Some(text) = text else {
+    let Some((text, same)) = text else {
         set_error(error, error_sz, "No XML model loaded");
         return 0;
     };
+    if !same {
+        set_error(
+            error,
+            error_sz,
+            "mj_saveLastXML: saving a model that differs from the last loaded one is not implemented",
+        );
+        return 0;
+    }
     let name = if filename.is_null() {
         String::new()
     } else {
