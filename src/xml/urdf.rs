@@ -134,6 +134,8 @@ struct Converter {
     materials: Vec<(String, [f32; 4])>,
     /// Mesh assets: name, file, scale.
     meshes: Vec<(String, String, [f64; 3])>,
+    /// Geoms of static links fused into the world.
+    fused_geoms: Vec<Element>,
 }
 
 fn strip_path(f: &str) -> &str {
@@ -349,6 +351,7 @@ pub fn convert(robot: &Element) -> Result<Element, String> {
         discardvisual: boolean(user_compiler, "discardvisual", true),
         materials: Vec::new(),
         meshes: Vec::new(),
+        fused_geoms: Vec::new(),
     };
     let fusestatic = boolean(user_compiler, "fusestatic", true);
     materials(robot, &mut conv.materials)?;
@@ -409,65 +412,22 @@ pub fn convert(robot: &Element) -> Result<Element, String> {
         children[ip].push(ic);
     }
 
-    // a link that is not the world and has no moving parent joint is fused into its parent
-    if fusestatic {
-        for (i, n) in names.iter().enumerate() {
-            let moving = parent_joint[i]
-                .and_then(|j| j.attr("type"))
-                .is_some_and(|t| {
-                    ["revolute", "continuous", "prismatic", "floating", "planar"].contains(&t)
-                });
-            if *n != "world" && !moving {
-                return Err(format!(
-                    "Error: static link '{n}' (fusestatic) is not implemented\n"
-                ));
-            }
-        }
-    }
-
     let mut world = new_el("worldbody", robot.line);
     // links not reached from a root (a cycle) are never placed, as in 2.2.2
-    fn build(
-        i: usize,
-        conv: &mut Converter,
-        links: &[&Element],
-        names: &[&str],
-        parent_joint: &[Option<&Element>],
-        children: &[Vec<usize>],
-        out: &mut Element,
-    ) -> Result<(), String> {
-        if names[i] == "world" {
-            conv.link(links[i], out, true)?;
-            for &c in &children[i] {
-                build(c, conv, links, names, parent_joint, children, out)?;
-            }
-            return Ok(());
-        }
-        let mut body = new_el("body", links[i].line);
-        body.attrs.push(("name".into(), names[i].into()));
-        if let Some(j) = parent_joint[i] {
-            joint(j, &mut body)?;
-        }
-        conv.link(links[i], &mut body, false)?;
-        for &c in &children[i] {
-            build(c, conv, links, names, parent_joint, children, &mut body)?;
-        }
-        out.children.push(body);
-        Ok(())
-    }
     for (i, p) in parent.iter().enumerate() {
         if p.is_none() {
-            build(
-                i,
-                &mut conv,
-                &links,
-                &names,
-                &parent_joint,
-                &children,
-                &mut world,
-            )?;
+            let tree = Tree {
+                links: &links,
+                names: &names,
+                parent_joint: &parent_joint,
+                children: &children,
+                fusestatic,
+            };
+            tree.build(i, &mut conv, &mut world, Place::World)?;
         }
     }
+    // geoms of fused links follow the world's own geoms
+    world.children.append(&mut conv.fused_geoms);
     if !conv.meshes.is_empty() {
         let mut asset = new_el("asset", robot.line);
         for (name, file, scale) in &conv.meshes {
@@ -481,4 +441,132 @@ pub fn convert(robot: &Element) -> Result<Element, String> {
     }
     root.children.push(world);
     Ok(root)
+}
+
+/// Where a link's body goes: under a moving body, directly in the world, or in the world
+/// through fused static links whose accumulated frame is given.
+#[derive(Clone, Copy)]
+enum Place {
+    Moving,
+    World,
+    Fused([f64; 3], [f64; 4]),
+}
+
+const MOVING: [&str; 5] = ["revolute", "continuous", "prismatic", "floating", "planar"];
+
+fn parse_vec<const N: usize>(el: &Element, key: &str) -> Option<[f64; N]> {
+    let v: Vec<f64> = el
+        .attr(key)?
+        .split_whitespace()
+        .filter_map(|x| x.parse().ok())
+        .collect();
+    v.try_into().ok()
+}
+
+fn replace_attr(el: &mut Element, key: &str, value: String) {
+    match el.attrs.iter_mut().find(|(k, _)| k == key) {
+        Some(a) => a.1 = value,
+        None => el.attrs.push((key.into(), value)),
+    }
+}
+
+/// Re-expresses the pose attributes of `el` (local to a fused link) in the fused frame, on the
+/// compiled (normalized) values as 2.2.2's static-body fusion does.
+fn change_frame(el: &mut Element, fpos: &[f64; 3], fquat: &[f64; 4]) {
+    let pos = parse_vec::<3>(el, "pos").unwrap_or([0.0; 3]);
+    let mut quat = parse_vec::<4>(el, "quat").unwrap_or([1.0, 0.0, 0.0, 0.0]);
+    crate::compiler::frame::normalize(&mut quat);
+    let (p, q) = accumulate(fpos, fquat, &pos, &quat);
+    replace_attr(el, "pos", text(&p));
+    replace_attr(el, "quat", text(&q));
+}
+
+/// Frame `(pos, quat)` followed by the child frame `(cpos, cquat)`.
+fn accumulate(
+    pos: &[f64; 3],
+    quat: &[f64; 4],
+    cpos: &[f64; 3],
+    cquat: &[f64; 4],
+) -> ([f64; 3], [f64; 4]) {
+    let m = quat2mat(quat);
+    let mut p = *pos;
+    for (r, pr) in p.iter_mut().enumerate() {
+        *pr += m[3 * r] * cpos[0] + m[3 * r + 1] * cpos[1] + m[3 * r + 2] * cpos[2];
+    }
+    (p, mulquat_unit(quat, cquat))
+}
+
+struct Tree<'a> {
+    links: &'a [&'a Element],
+    names: &'a [&'a str],
+    parent_joint: &'a [Option<&'a Element>],
+    children: &'a [Vec<usize>],
+    fusestatic: bool,
+}
+
+impl Tree<'_> {
+    fn build(
+        &self,
+        i: usize,
+        conv: &mut Converter,
+        out: &mut Element,
+        place: Place,
+    ) -> Result<(), String> {
+        let link = self.links[i];
+        if self.names[i] == "world" {
+            conv.link(link, out, true)?;
+            for &c in &self.children[i] {
+                self.build(c, conv, out, Place::World)?;
+            }
+            return Ok(());
+        }
+        let pj = self.parent_joint[i];
+        let moving = pj
+            .and_then(|j| j.attr("type"))
+            .is_some_and(|t| MOVING.contains(&t));
+        if !moving && self.fusestatic {
+            // a static link is fused into its parent (2.2.2's fusestatic)
+            let (pos, mut quat) = match pj {
+                Some(j) => {
+                    joint(j, &mut new_el("body", j.line))?;
+                    origin(j)?
+                }
+                None => ([0.0; 3], [1.0, 0.0, 0.0, 0.0]),
+            };
+            crate::compiler::frame::normalize(&mut quat);
+            let (fpos, fquat) =
+                match place {
+                    Place::Moving => return Err(err(
+                        link,
+                        "fusing a static link into a moving link (fusestatic) is not implemented",
+                    )),
+                    Place::World => (pos, quat),
+                    Place::Fused(p, q) => accumulate(&p, &q, &pos, &quat),
+                };
+            let mut tmp = new_el("body", link.line);
+            conv.link(link, &mut tmp, true)?;
+            for mut g in tmp.children {
+                change_frame(&mut g, &fpos, &fquat);
+                conv.fused_geoms.push(g);
+            }
+            for &c in &self.children[i] {
+                self.build(c, conv, out, Place::Fused(fpos, fquat))?;
+            }
+            return Ok(());
+        }
+        let mut body = new_el("body", link.line);
+        body.attrs.push(("name".into(), self.names[i].into()));
+        if let Some(j) = pj {
+            joint(j, &mut body)?;
+        }
+        if let Place::Fused(p, q) = place {
+            change_frame(&mut body, &p, &q);
+        }
+        conv.link(link, &mut body, false)?;
+        for &c in &self.children[i] {
+            self.build(c, conv, &mut body, Place::Moving)?;
+        }
+        out.children.push(body);
+        Ok(())
+    }
 }
