@@ -136,6 +136,8 @@ struct Converter {
     meshes: Vec<(String, String, [f64; 3])>,
     /// Geoms of static links fused into the world.
     fused_geoms: Vec<Element>,
+    /// No compiler option changes inertias (fusing into moving links needs that).
+    plain_inertia: bool,
 }
 
 fn strip_path(f: &str) -> &str {
@@ -352,6 +354,17 @@ pub fn convert(robot: &Element) -> Result<Element, String> {
         materials: Vec::new(),
         meshes: Vec::new(),
         fused_geoms: Vec::new(),
+        plain_inertia: user_compiler.is_none_or(|c| {
+            c.attr("inertiafromgeom").is_none_or(|v| v != "true")
+                && [
+                    "balanceinertia",
+                    "boundmass",
+                    "boundinertia",
+                    "settotalmass",
+                ]
+                .iter()
+                .all(|k| c.attr(k).is_none())
+        }),
     };
     let fusestatic = boolean(user_compiler, "fusestatic", true);
     materials(robot, &mut conv.materials)?;
@@ -449,7 +462,104 @@ pub fn convert(robot: &Element) -> Result<Element, String> {
 enum Place {
     Moving,
     World,
-    Fused([f64; 3], [f64; 4]),
+    /// Through fused static links (into the world or not), with their accumulated frame.
+    Fused(bool, [f64; 3], [f64; 4]),
+}
+
+fn tmp_has_no_inertial(link: &Element) -> bool {
+    child(link, "inertial").is_none()
+}
+
+/// Inertial values of an `<inertial>` element this converter wrote: mass, pos, normalized
+/// quat, diagonal inertia.
+fn inertial_values(el: &Element) -> (f64, [f64; 3], [f64; 4], [f64; 3]) {
+    let mass = parse_vec::<1>(el, "mass").map_or(0.0, |m| m[0]);
+    let pos = parse_vec::<3>(el, "pos").unwrap_or([0.0; 3]);
+    let mut quat = parse_vec::<4>(el, "quat").unwrap_or([1.0, 0.0, 0.0, 0.0]);
+    crate::compiler::frame::normalize(&mut quat);
+    let inertia = parse_vec::<3>(el, "diaginertia").unwrap_or([0.0; 3]);
+    (mass, pos, quat, inertia)
+}
+
+/// Adds the mass of a fused static link (its `<inertial>` `child`, in the frame `fpos, fquat`
+/// of the parent body `body`) to the parent's inertial, as 2.2.2's static-body fusion does.
+fn add_mass(
+    body: &mut Element,
+    child_inertial: &Element,
+    fpos: &[f64; 3],
+    fquat: &[f64; 4],
+    plain: bool,
+    link: &Element,
+) -> Result<(), String> {
+    use crate::compiler::frame::{global_inertia, offcenter, MINVAL};
+    let (cmass, cpos, cquat, cinertia) = inertial_values(child_inertial);
+    if cmass < MINVAL {
+        return Ok(());
+    }
+    let Some(pi) = body.children.iter().position(|c| c.name == "inertial") else {
+        return Err(err(
+            link,
+            "fusing a static link into a link without inertial is not implemented",
+        ));
+    };
+    if !plain {
+        return Err(err(
+            link,
+            "fusing static links with inertia compiler options is not implemented",
+        ));
+    }
+    let (pmass, ppos, pquat, pinertia) = inertial_values(&body.children[pi]);
+    let (cpos, cquat) = accumulate(fpos, fquat, &cpos, &cquat);
+    let mass = [pmass, cmass];
+    let inertia = [pinertia, cinertia];
+    let ipos = [ppos, cpos];
+    let iquat = [pquat, cquat];
+    let mut total = 0.0;
+    let mut com = [0.0; 3];
+    for j in 0..2 {
+        total += mass[j];
+        for k in 0..3 {
+            com[k] += mass[j] * ipos[j][k];
+        }
+    }
+    let (mut q, mut diag) = ([1.0, 0.0, 0.0, 0.0], [0.0; 3]);
+    if total < MINVAL {
+        total = 0.0;
+        com = [0.0; 3];
+    } else {
+        for c in com.iter_mut() {
+            *c /= total;
+        }
+        let mut toti = [0.0; 6];
+        for j in 0..2 {
+            let d = [
+                ipos[j][0] - com[0],
+                ipos[j][1] - com[1],
+                ipos[j][2] - com[2],
+            ];
+            let a = global_inertia(&inertia[j], &iquat[j]);
+            let b = offcenter(mass[j], &d);
+            for k in 0..6 {
+                toti[k] += a[k] + b[k];
+            }
+        }
+        let alt = Alt {
+            fullinertia: toti,
+            ..Alt::default()
+        };
+        let s = Settings {
+            degree: false,
+            eulerseq: b"xyz",
+        };
+        alt_set(&alt, &mut q, Some(&mut diag), &s)
+            .map_err(|e| format!("Error: error '{e}' in fusing static body inertias\n"))?;
+    }
+    let el = &mut body.children[pi];
+    replace_attr(el, "pos", text(&com));
+    replace_attr(el, "quat", text(&prenormalized(&q)));
+    replace_attr(el, "mass", text(&[total]));
+    replace_attr(el, "diaginertia", text(&diag));
+    Ok(())
 }
 
 const MOVING: [&str; 5] = ["revolute", "continuous", "prismatic", "floating", "planar"];
@@ -478,7 +588,55 @@ fn change_frame(el: &mut Element, fpos: &[f64; 3], fquat: &[f64; 4]) {
     crate::compiler::frame::normalize(&mut quat);
     let (p, q) = accumulate(fpos, fquat, &pos, &quat);
     replace_attr(el, "pos", text(&p));
-    replace_attr(el, "quat", text(&q));
+    replace_attr(el, "quat", text(&prenormalized(&q)));
+}
+
+/// A quaternion the compiler's normalization maps exactly to the unit quaternion `q` (the
+/// written value is normalized once more on loading; 2.2.2 keeps `q` as computed).
+fn prenormalized(q: &[f64; 4]) -> [f64; 4] {
+    let maps = |c: &[f64; 4]| {
+        let mut n = *c;
+        crate::compiler::frame::normalize(&mut n);
+        n == *q
+    };
+    if maps(q) {
+        return *q;
+    }
+    // scaled copies first (the norm of q is 1 only to rounding), then 1-ulp changes
+    for k in 1..=16 {
+        for sign in [1.0, -1.0] {
+            let t = 1.0 + sign * k as f64 * f64::EPSILON / 2.0;
+            let c = q.map(|x| x * t);
+            if maps(&c) {
+                return c;
+            }
+        }
+    }
+    let step = |x: f64, d: i32| match d {
+        1 => f64::from_bits(if x >= 0.0 {
+            x.to_bits() + 1
+        } else {
+            x.to_bits() - 1
+        }),
+        -1 if x != 0.0 => f64::from_bits(if x > 0.0 {
+            x.to_bits() - 1
+        } else {
+            x.to_bits() + 1
+        }),
+        _ => x,
+    };
+    for code in 0..81 {
+        let mut c = *q;
+        let mut k = code;
+        for x in c.iter_mut() {
+            *x = step(*x, k % 3 - 1);
+            k /= 3;
+        }
+        if maps(&c) {
+            return c;
+        }
+    }
+    *q
 }
 
 /// Frame `(pos, quat)` followed by the child frame `(cpos, cquat)`.
@@ -534,23 +692,38 @@ impl Tree<'_> {
                 None => ([0.0; 3], [1.0, 0.0, 0.0, 0.0]),
             };
             crate::compiler::frame::normalize(&mut quat);
-            let (fpos, fquat) =
-                match place {
-                    Place::Moving => return Err(err(
-                        link,
-                        "fusing a static link into a moving link (fusestatic) is not implemented",
-                    )),
-                    Place::World => (pos, quat),
-                    Place::Fused(p, q) => accumulate(&p, &q, &pos, &quat),
-                };
+            let (into_world, fpos, fquat) = match place {
+                Place::World => (true, pos, quat),
+                Place::Moving => (false, pos, quat),
+                Place::Fused(w, p, q) => {
+                    let (a, b) = accumulate(&p, &q, &pos, &quat);
+                    (w, a, b)
+                }
+            };
             let mut tmp = new_el("body", link.line);
-            conv.link(link, &mut tmp, true)?;
+            conv.link(link, &mut tmp, false)?;
             for mut g in tmp.children {
+                if g.name == "inertial" {
+                    if !into_world {
+                        add_mass(out, &g, &fpos, &fquat, conv.plain_inertia, link)?;
+                    }
+                    continue;
+                }
+                if !into_world && tmp_has_no_inertial(link) {
+                    return Err(err(
+                        link,
+                        "fusing a static link without inertial into a moving link is not implemented",
+                    ));
+                }
                 change_frame(&mut g, &fpos, &fquat);
-                conv.fused_geoms.push(g);
+                if into_world {
+                    conv.fused_geoms.push(g);
+                } else {
+                    out.children.push(g);
+                }
             }
             for &c in &self.children[i] {
-                self.build(c, conv, out, Place::Fused(fpos, fquat))?;
+                self.build(c, conv, out, Place::Fused(into_world, fpos, fquat))?;
             }
             return Ok(());
         }
@@ -559,7 +732,7 @@ impl Tree<'_> {
         if let Some(j) = pj {
             joint(j, &mut body)?;
         }
-        if let Place::Fused(p, q) = place {
+        if let Place::Fused(_, p, q) = place {
             change_frame(&mut body, &p, &q);
         }
         conv.link(link, &mut body, false)?;
