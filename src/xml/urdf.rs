@@ -15,12 +15,13 @@ fn err(el: &Element, msg: &str) -> String {
     )
 }
 
-fn new_el(name: &str, line: i32) -> Element {
+/// A generated element; like 2.2.2's URDF objects it has no source line (`_line` documents it).
+fn new_el(name: &str, _line: i32) -> Element {
     Element {
         name: name.into(),
         attrs: Vec::new(),
         children: Vec::new(),
-        line,
+        line: -1,
     }
 }
 
@@ -138,6 +139,8 @@ struct Converter {
     fused_geoms: Vec<Element>,
     /// No compiler option changes inertias (fusing into moving links needs that).
     plain_inertia: bool,
+    /// Bodies created so far (2.2.2's body ids before fusion).
+    nbody: usize,
 }
 
 fn strip_path(f: &str) -> &str {
@@ -257,7 +260,8 @@ impl Converter {
                 continue;
             }
             let mut g = self.geom(c, collision)?;
-            if let Some(v) = color {
+            // 2.2.2 marks "no color" by a negative red
+            if let Some(v) = color.filter(|v| v[0] >= 0.0) {
                 let v = v.map(|x| x as f64);
                 g.attrs.push(("rgba".into(), text(&v)));
             }
@@ -307,13 +311,9 @@ fn joint(j: &Element, body: &mut Element) -> Result<(), String> {
                 mk(format!("{name}_RZ"), "hinge", Some(axis)),
             ]
         }
-        _ => {
-            // 2.2.2 takes an unknown type as fixed, and fails on its dynamics or limits
-            if kind != "fixed" && (child(j, "dynamics").is_some() || child(j, "limit").is_some()) {
-                return Err(err(j, "invalid joint type in URDF joint definition"));
-            }
-            return Ok(());
-        }
+        "fixed" => return Ok(()),
+        // 2.2.2 crashes on an unknown type; it is an error here
+        _ => return Err(err(j, "invalid joint type in URDF joint definition")),
     };
     if let Some(d) = child(j, "dynamics") {
         let damping = nums::<1>(d, "damping", false)?;
@@ -334,6 +334,8 @@ fn joint(j: &Element, body: &mut Element) -> Result<(), String> {
             let lo = nums::<1>(l, "lower", false)?.map_or(0.0, |v| v[0]);
             let hi = nums::<1>(l, "upper", false)?.map_or(0.0, |v| v[0]);
             let limited = !lo.is_nan() && !hi.is_nan() && lo < hi;
+            // effort only bounds actuators, which URDF cannot define; read for its errors
+            nums::<1>(l, "effort", false)?;
             first.attrs.push(("range".into(), text(&[lo, hi])));
             first.attrs.push(("limited".into(), limited.to_string()));
         }
@@ -354,6 +356,7 @@ pub fn convert(robot: &Element) -> Result<Element, String> {
         materials: Vec::new(),
         meshes: Vec::new(),
         fused_geoms: Vec::new(),
+        nbody: 0,
         plain_inertia: user_compiler.is_none_or(|c| {
             c.attr("inertiafromgeom").is_none_or(|v| v != "true")
                 && [
@@ -466,19 +469,31 @@ enum Place {
     Fused(bool, [f64; 3], [f64; 4]),
 }
 
+/// The mass checks 2.2.2's compiler makes on a body before it is fused.
+fn check_inertia(el: &Element, name: &str, id: usize) -> Result<(), String> {
+    let (_, _, _, t) = inertial_values(el);
+    let fail = |msg: &str| Err(format!("Error: {msg}\nObject name = {name}, id = {id}"));
+    if t[0] + t[1] < t[2] || t[0] + t[2] < t[1] || t[1] + t[2] < t[0] {
+        return fail("inertia must satisfy A + B >= C; use 'balanceinertia' to fix");
+    }
+    Ok(())
+}
+
 fn tmp_has_no_inertial(link: &Element) -> bool {
     child(link, "inertial").is_none()
 }
 
-/// Inertial values of an `<inertial>` element this converter wrote: mass, pos, normalized
-/// quat, diagonal inertia.
+/// Compiled inertial values of an `<inertial>` element this converter wrote: mass, pos,
+/// normalized quat, diagonal inertia.
 fn inertial_values(el: &Element) -> (f64, [f64; 3], [f64; 4], [f64; 3]) {
     let mass = parse_vec::<1>(el, "mass").map_or(0.0, |m| m[0]);
     let pos = parse_vec::<3>(el, "pos").unwrap_or([0.0; 3]);
     let mut quat = parse_vec::<4>(el, "quat").unwrap_or([1.0, 0.0, 0.0, 0.0]);
     crate::compiler::frame::normalize(&mut quat);
     let inertia = parse_vec::<3>(el, "diaginertia").unwrap_or([0.0; 3]);
-    (mass, pos, quat, inertia)
+    // the compiler's lower bounds (boundmass, boundinertia: 0 here) come first
+    let bound = |x: f64| if x > 0.0 { x } else { 0.0 };
+    (bound(mass), pos, quat, inertia.map(bound))
 }
 
 /// Adds the mass of a fused static link (its `<inertial>` `child`, in the frame `fpos, fquat`
@@ -678,6 +693,8 @@ impl Tree<'_> {
             }
             return Ok(());
         }
+        conv.nbody += 1;
+        let id = conv.nbody;
         let pj = self.parent_joint[i];
         let moving = pj
             .and_then(|j| j.attr("type"))
@@ -703,6 +720,9 @@ impl Tree<'_> {
             let mut tmp = new_el("body", link.line);
             conv.link(link, &mut tmp, false)?;
             for mut g in tmp.children {
+                if g.name == "inertial" && conv.plain_inertia {
+                    check_inertia(&g, self.names[i], id)?;
+                }
                 if g.name == "inertial" {
                     if !into_world {
                         add_mass(out, &g, &fpos, &fquat, conv.plain_inertia, link)?;
