@@ -274,3 +274,58 @@ fn save_changed_model_is_refused() {
         "{t}"
     );
 }
+
+/// Attribute mutants of the URDF test models (dropped, not a number, too short, negated):
+/// ours loads exactly those the reference loads, into the identical model, and otherwise fails
+/// with a message (where the reference crashes, ours must not).
+#[test]
+fn urdf_mutants_match_reference() {
+    require_reference();
+    let (r, o) = (xmlio(Lib::Ref), xmlio(Lib::Ours));
+    let dir = work_dir("xml_io");
+    let (mut total, mut loaded, mut same_msg, mut failed) = (0, 0, 0, 0);
+    for m in urdf_models() {
+        let src = std::fs::read_to_string(&m).unwrap();
+        let mut mutants = Vec::new();
+        let mut at = 0;
+        while let Some(q) = src[at..].find("=\"") {
+            let start = at + q + 2;
+            let end = start + src[start..].find('"').unwrap();
+            let key = src[..at + q].rfind(' ').unwrap();
+            let val = &src[start..end];
+            let first = val.split(' ').next().unwrap_or("");
+            mutants.push(format!("{}{}", &src[..key], &src[end + 1..]));
+            mutants.push(format!("{}x{}", &src[..start], &src[end..]));
+            mutants.push(format!("{}{first}{}", &src[..start], &src[end..]));
+            mutants.push(format!("{}-{val}{}", &src[..start], &src[end..]));
+            at = end;
+        }
+        for text_ in mutants {
+            let f = dir.join("attr-mutant.urdf");
+            std::fs::write(&f, &text_).unwrap();
+            let f = f.to_string_lossy().into_owned();
+            let (a, b) = (mjb(&r, &f, "mut-ref"), mjb(&o, &f, "mut-ours"));
+            total += 1;
+            match (a, b) {
+                (Ok(a), Ok(b)) => {
+                    assert!(a == b, "mutant loads differently:\n{text_}");
+                    loaded += 1;
+                }
+                (Err(a), Err(b)) => {
+                    failed += 1;
+                    // the reference crashes (empty output) on an unknown joint type
+                    assert!(b.contains("load error"), "{b}");
+                    same_msg += usize::from(a == b);
+                }
+                (a, b) => panic!("reference {:?} / ours {:?} on\n{text_}", a.err(), b.err()),
+            }
+        }
+    }
+    report(
+        "urdf_mutants",
+        &format!(
+            "{total} URDF mutants: {loaded} load identically, {failed} fail in both \
+             ({same_msg} with the same message)\n"
+        ),
+    );
+}

@@ -38,30 +38,18 @@ fn need_attr<'a>(el: &'a Element, key: &str) -> Result<&'a str, String> {
         .ok_or_else(|| err(el, &format!("required attribute missing: '{key}'")))
 }
 
-/// `n` numbers of attribute `key` (None when absent); `exact`: no more than `n` allowed.
-fn nums<const N: usize>(el: &Element, key: &str, exact: bool) -> Result<Option<[f64; N]>, String> {
-    let Some(text) = el.attr(key) else {
-        return Ok(None);
-    };
-    let vals: Vec<&str> = text.split_whitespace().collect();
-    if vals.len() < N || (exact && vals.len() > N) {
-        return Err(err(
-            el,
-            &format!("attribute '{key}' does not have the required number of values"),
-        ));
-    }
+/// `N` numbers of attribute `key` (None when absent), read as 2.2.2 reads attributes (exact
+/// count; `_exact` documents the call site).
+fn nums<const N: usize>(el: &Element, key: &str, _exact: bool) -> Result<Option<[f64; N]>, String> {
     let mut out = [0.0; N];
-    for (o, v) in out.iter_mut().zip(&vals) {
-        *o = v
-            .parse::<f64>()
-            .map_err(|_| err(el, &format!("problem reading attribute '{key}'")))?;
-    }
-    Ok(Some(out))
+    let n = super::reader::read_nums(el, key, &mut out, false, true)?;
+    Ok((n > 0).then_some(out))
 }
 
-fn req_nums<const N: usize>(el: &Element, key: &str, exact: bool) -> Result<[f64; N], String> {
-    need_attr(el, key)?;
-    Ok(nums::<N>(el, key, exact)?.unwrap_or([0.0; N]))
+fn req_nums<const N: usize>(el: &Element, key: &str, _exact: bool) -> Result<[f64; N], String> {
+    let mut out = [0.0; N];
+    super::reader::read_nums(el, key, &mut out, true, true)?;
+    Ok(out)
 }
 
 fn text(v: &[f64]) -> String {
@@ -125,8 +113,9 @@ fn materials(el: &Element, out: &mut Vec<(String, [f32; 4])>) -> Result<(), Stri
 }
 
 fn rgba(color: &Element) -> Result<[f32; 4], String> {
-    let v = req_nums::<4>(color, "rgba", false)?;
-    Ok(v.map(|x| x as f32))
+    let mut out = [0.0f32; 4];
+    super::reader::read_nums(color, "rgba", &mut out, true, true)?;
+    Ok(out)
 }
 
 struct Converter {
@@ -756,6 +745,12 @@ impl Tree<'_> {
             change_frame(&mut body, &p, &q);
         }
         conv.link(link, &mut body, false)?;
+        if conv.plain_inertia {
+            // checked here to name the body by its id before fusion, as 2.2.2 does
+            if let Some(inertial) = body.children.iter().find(|c| c.name == "inertial") {
+                check_inertia(inertial, self.names[i], id)?;
+            }
+        }
         for &c in &self.children[i] {
             self.build(c, conv, &mut body, Place::Moving)?;
         }
