@@ -758,3 +758,48 @@ impl Tree<'_> {
         Ok(())
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn meshes_become_assets_named_after_their_files() {
+        let src = r#"<robot name="m"><link name="world"/><link name="a">
+            <collision><geometry><mesh filename="package://p/meshes/part.stl" scale="2 2 2"/></geometry></collision>
+            <collision><geometry><mesh filename="package://p/meshes/part.stl" scale="3 2 2"/></geometry></collision>
+            <collision><geometry><mesh filename="other/part.stl" scale="2 2 2"/></geometry></collision>
+            </link><joint name="j" type="floating"><parent link="world"/><child link="a"/></joint></robot>"#;
+        let mjcf = convert(&crate::xml::tree::parse(src).unwrap()).unwrap();
+        let asset = mjcf.children.iter().find(|c| c.name == "asset").unwrap();
+        let meshes: Vec<(&str, &str, &str)> = asset
+            .children
+            .iter()
+            .map(|m| {
+                (
+                    m.attr("name").unwrap(),
+                    m.attr("file").unwrap(),
+                    m.attr("scale").unwrap(),
+                )
+            })
+            .collect();
+        assert_eq!(
+            meshes,
+            [
+                ("part", "part.stl", "2.0 2.0 2.0"),
+                ("part1", "part.stl", "3.0 2.0 2.0")
+            ]
+        );
+        let world = mjcf
+            .children
+            .iter()
+            .find(|c| c.name == "worldbody")
+            .unwrap();
+        let geoms: Vec<&str> = world.children[0]
+            .children
+            .iter()
+            .filter_map(|g| g.attr("mesh"))
+            .collect();
+        assert_eq!(geoms, ["part", "part1", "part"]);
+    }
+}
