@@ -359,12 +359,6 @@ int mj_setLengthRange(mjModel *m,
                       char *error,
                       int error_sz);
 
-int mj_saveLastXML(const char *filename, const mjModel *m, char *error, int error_sz);
-
-void mj_freeLastXML(void);
-
-int mj_printSchema(const char *filename, char *buffer, int buffer_sz, int flg_html, int flg_pad);
-
 void mj_printFormattedModel(const mjModel *m, const char *filename, const char *float_format);
 
 void mj_printModel(const mjModel *m, const char *filename);
@@ -573,6 +567,12 @@ void mju_printMatSparse(const mjtNum *mat,
                         const int *colind);
 
 mjModel *mj_loadXML(const char *filename, const mjVFS *vfs, char *error, int error_sz);
+
+int mj_saveLastXML(const char *filename, const mjModel *m, char *error, int error_sz);
+
+void mj_freeLastXML(void);
+
+int mj_printSchema(const char *filename, char *buffer, int buffer_sz, int flg_html, int flg_pad);
 
 #ifdef __cplusplus
 }  // extern "C"

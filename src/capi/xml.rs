@@ -5,8 +5,9 @@ use crate::abi::view::ModelMut;
 use crate::abi::*;
 use crate::capi::errmem;
 use crate::compiler;
-use crate::xml::{include, reader, schema, tree};
+use crate::xml::{include, reader, schema, tree, urdf, writer};
 use std::os::raw::{c_char, c_int};
+use std::sync::Mutex;
 
 /// Copies `msg` into the caller's error buffer (truncated, NUL-terminated).
 unsafe fn set_error(error: *mut c_char, error_sz: c_int, msg: &str) {
@@ -39,13 +40,28 @@ unsafe fn load_text(filename: &str, vfs: *const mjVFS) -> Result<Vec<u8>, String
     })
 }
 
-/// The model file (and its includes) to a model description.
-unsafe fn parse(fname: &str, vfs: *const mjVFS) -> Result<compiler::spec::ModelSpec, String> {
+/// The last model loaded, as 2.2.2 keeps it for `mj_saveLastXML`: its MJCF tree and the MJB
+/// image of the model compiled from it.
+struct LastModel {
+    mjcf: tree::Element,
+    image: Vec<u8>,
+}
+
+static LAST_MODEL: Mutex<Option<LastModel>> = Mutex::new(None);
+
+/// The model file (and its includes) to its MJCF tree and model description.
+unsafe fn parse(
+    fname: &str,
+    vfs: *const mjVFS,
+) -> Result<(tree::Element, compiler::spec::ModelSpec), String> {
     let bytes = load_text(fname, vfs)?;
     let text = String::from_utf8_lossy(&bytes);
     let mut root = tree::parse(text.trim_end_matches('\0'))?;
     if root.name.eq_ignore_ascii_case("robot") {
-        return Err("XML Error: URDF models are not supported by this loader yet".into());
+        // 2.2.2 reads URDF without the MJCF schema check
+        let mjcf = urdf::convert(&root)?;
+        let spec = reader::read(&mjcf)?;
+        return Ok((mjcf, spec));
     }
     if !root.name.eq_ignore_ascii_case("mujoco") {
         return Err(format!(
@@ -62,7 +78,8 @@ unsafe fn parse(fname: &str, vfs: *const mjVFS) -> Result<compiler::spec::ModelS
         &mut included,
     )?;
     schema::check(&root)?;
-    reader::read(&root)
+    let spec = reader::read(&root)?;
+    Ok((root, spec))
 }
 
 thread_local! {
@@ -120,7 +137,7 @@ unsafe fn load(filename: *const c_char, vfs: *const mjVFS) -> Result<*mut mjMode
     let fname = std::ffi::CStr::from_ptr(filename)
         .to_string_lossy()
         .into_owned();
-    let spec = parse(&fname, vfs)?;
+    let (mjcf, spec) = parse(&fname, vfs)?;
     // from here on, as in 2.2.2's compiler, warnings go to the error buffer
     errmem::_mjPRIVATE__set_tls_warning_fn(Some(keep_warning));
     // 2.2.2's compiler seeds the C generator (later sensor noise draws from it)
@@ -168,6 +185,12 @@ unsafe fn load(filename: *const c_char, vfs: *const mjVFS) -> Result<*mut mjMode
         crate::abi::alloc::delete_model(m);
         return Err(format!("Error: engine error: {e}"));
     }
+    if let Ok(mut last) = LAST_MODEL.lock() {
+        *last = Some(LastModel {
+            mjcf,
+            image: crate::abi::mjb::save(&*m),
+        });
+    }
     Ok(m)
 }
 
@@ -197,4 +220,85 @@ pub unsafe extern "C" fn mj_loadXML(
             std::ptr::null_mut()
         }
     }
+}
+
+/// Writes the last loaded model as MJCF; 1 on success, 0 with the error text otherwise.
+#[no_mangle]
+pub unsafe extern "C" fn mj_saveLastXML(
+    filename: *const c_char,
+    m: *const mjModel,
+    error: *mut c_char,
+    error_sz: c_int,
+) -> c_int {
+    let text = match LAST_MODEL.lock() {
+        Ok(last) => last.as_ref().map(|l| {
+            // 2.2.2 copies values the user changed in m back into the file; we write the
+            // model as loaded, so a changed (or another) model is refused
+            let same = m
+                .as_ref()
+                .is_none_or(|m| crate::abi::mjb::save(m) == l.image);
+            (writer::to_text(&l.mjcf), same)
+        }),
+        Err(_) => None,
+    };
+    let Some((text, same)) = text else {
+        set_error(error, error_sz, "No XML model loaded");
+        return 0;
+    };
+    if !same {
+        set_error(
+            error,
+            error_sz,
+            "mj_saveLastXML: saving a model that differs from the last loaded one is not implemented",
+        );
+        return 0;
+    }
+    let name = if filename.is_null() {
+        String::new()
+    } else {
+        std::ffi::CStr::from_ptr(filename)
+            .to_string_lossy()
+            .into_owned()
+    };
+    if std::fs::write(&name, text).is_err() {
+        set_error(error, error_sz, "File not found");
+        return 0;
+    }
+    set_error(error, error_sz, "");
+    1
+}
+
+/// Forgets the last loaded model.
+#[no_mangle]
+pub unsafe extern "C" fn mj_freeLastXML() {
+    if let Ok(mut last) = LAST_MODEL.lock() {
+        *last = None;
+    }
+}
+
+/// The MJCF schema as text or HTML: written to `filename` and/or copied (truncated) to
+/// `buffer`; returns its length.
+#[no_mangle]
+pub unsafe extern "C" fn mj_printSchema(
+    filename: *const c_char,
+    buffer: *mut c_char,
+    buffer_sz: c_int,
+    flg_html: c_int,
+    flg_pad: c_int,
+) -> c_int {
+    let text = schema::print(flg_html != 0, flg_pad != 0);
+    if !filename.is_null() {
+        let name = std::ffi::CStr::from_ptr(filename).to_string_lossy();
+        let _ = std::fs::write(name.as_ref(), &text);
+    }
+    if !buffer.is_null() && buffer_sz > 0 {
+        // strncpy then terminate at the last byte, as 2.2.2 does
+        let n = text.len().min(buffer_sz as usize);
+        std::ptr::copy_nonoverlapping(text.as_ptr() as *const c_char, buffer, n);
+        if n < buffer_sz as usize {
+            std::ptr::write_bytes(buffer.add(n), 0, buffer_sz as usize - n);
+        }
+        *buffer.add(buffer_sz as usize - 1) = 0;
+    }
+    text.len() as c_int
 }

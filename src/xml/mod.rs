@@ -4,3 +4,5 @@ pub mod include;
 pub mod reader;
 pub mod schema;
 pub mod tree;
+pub mod urdf;
+pub mod writer;

@@ -39,7 +39,7 @@ fn parse_real<T: std::str::FromStr + From<f32> + PartialEq + Copy + Into<f64>>(
 }
 
 /// Reads up to `out.len()` numbers of attribute `name`; returns how many (0: absent).
-fn read_nums<T: std::str::FromStr + From<f32> + Copy + PartialEq + Into<f64>>(
+pub(crate) fn read_nums<T: std::str::FromStr + From<f32> + Copy + PartialEq + Into<f64>>(
     el: &Element,
     name: &str,
     out: &mut [T],

@@ -1505,3 +1505,90 @@ pub fn check(root: &Element) -> Result<(), String> {
         )
     })
 }
+
+impl Node {
+    /// The schema as 2.2.2's `mj_printSchema` prints it in text form.
+    fn print_text(&self, out: &mut String, level: usize) {
+        let name = if self.name == "body" {
+            "(world)body"
+        } else {
+            self.name
+        };
+        out.push_str(&" ".repeat(3 * level));
+        out.push_str(&format!("{name} ({})", self.kind));
+        let base = 3 * level + name.len() + 4;
+        if base < 30 {
+            out.push_str(&" ".repeat(30 - base));
+        }
+        let mut col = base.max(30);
+        for a in self.attrs {
+            if col > 60 {
+                out.push('\n');
+                col = base.max(30);
+                out.push_str(&" ".repeat(col));
+            }
+            out.push_str(a);
+            out.push(' ');
+            col += a.len() + 1;
+        }
+        out.push('\n');
+        for c in &self.children {
+            c.print_text(out, level + 1);
+        }
+    }
+
+    /// The schema as an HTML table (`pad`: CSS padding instead of `&nbsp;` indentation).
+    fn print_html(&self, out: &mut String, level: usize, pad: bool) {
+        let name = if self.name == "body" {
+            "(world)body"
+        } else {
+            self.name
+        };
+        if level == 0 {
+            out.push_str("<table border=\"1\">\n");
+        }
+        if pad {
+            out.push_str(&format!(
+                "<tr>\n\t<td style=\"padding-left:{}\" bgcolor=\"#EEEEEE\" class=\"el\">{name}</td>\n",
+                5 + 15 * level
+            ));
+        } else {
+            out.push_str("<tr>\n\t<td bgcolor=\"#EEEEEE\" class=\"el\">");
+            out.push_str(&"&nbsp;".repeat(4 * level));
+            out.push_str(name);
+            out.push_str("</td>\n");
+        }
+        out.push_str(&format!(
+            "\t<td class=\"ty\">{}</td>\n\t<td class=\"at\">",
+            self.kind
+        ));
+        if self.attrs.is_empty() {
+            out.push_str("<span style=\"color:black\"><i>no attributes</i></span>");
+        }
+        for a in self.attrs {
+            out.push_str(a);
+            out.push(' ');
+        }
+        out.push_str("</td>\n</tr>\n");
+        for c in &self.children {
+            c.print_html(out, level + 1, pad);
+        }
+        if level == 0 {
+            out.push_str("</table>\n");
+        }
+    }
+}
+
+/// The whole schema as text or HTML, as `mj_printSchema` returns it.
+pub fn print(html: bool, pad: bool) -> String {
+    let tree = build(&mut ROWS.iter().peekable());
+    let mut out = String::new();
+    if let Some(top) = tree.first() {
+        if html {
+            top.print_html(&mut out, 0, pad);
+        } else {
+            top.print_text(&mut out, 0);
+        }
+    }
+    out
+}
