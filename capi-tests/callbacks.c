@@ -4,8 +4,14 @@
 #include <math.h>
 #include <mujoco/mujoco.h>
 #include <stdio.h>
+#include <string.h>
 
 static int calls[6];
+
+// exported by 2.2.2 outside mujoco.h
+int mj_jacDifPair(const mjModel* m, const mjData* d, int* chain, int b1, int b2,
+                  const mjtNum* pos1, const mjtNum* pos2, mjtNum* jac1p, mjtNum* jac2p,
+                  mjtNum* jacdifp, mjtNum* jac1r, mjtNum* jac2r, mjtNum* jacdifr);
 
 static void control(const mjModel* m, mjData* d) {
   calls[0]++;
@@ -104,6 +110,25 @@ int main(int argc, char** argv) {
                con[k].frame[2]);
     }
   }
+  // mj_jacDifPair for every body pair, dense then sparse
+  for (int sparse = 0; sparse < 2; sparse++) {
+    m->opt.jacobian = sparse ? mjJAC_SPARSE : mjJAC_DENSE;
+    mjtNum p1[3] = {0.1, 0.2, 0.3}, p2[3] = {-0.2, 0.1, 0.4};
+    mjtNum j1p[3 * 64], j2p[3 * 64], jdp[3 * 64], j1r[3 * 64], j2r[3 * 64], jdr[3 * 64];
+    int chain[64];
+    for (int b1 = 0; b1 < m->nbody; b1++) {
+      for (int b2 = 0; b2 < m->nbody; b2++) {
+        // entries the function does not write (same body, sparse) stay as the caller left them
+        memset(jdp, 0, sizeof jdp);
+        memset(jdr, 0, sizeof jdr);
+        int n = mj_jacDifPair(m, d, chain, b1, b2, p1, p2, j1p, j2p, jdp, j1r, j2r, jdr);
+        printf("jacDifPair %d %d %d: n %d", sparse, b1, b2, n);
+        for (int k = 0; k < 3 * n; k++) printf(" %.17g %.17g", jdp[k], jdr[k]);
+        printf("\n");
+      }
+    }
+  }
+  m->opt.jacobian = mjJAC_AUTO;
   printf("calls: control %d passive %d gain %d bias %d dyn %d sensor %d\n", calls[0], calls[1],
          calls[2], calls[3], calls[4], calls[5]);
   mj_resetCallbacks();

@@ -1452,3 +1452,62 @@ pub unsafe extern "C" fn collide_pair(
         Ok(n as c_int)
     })
 }
+
+/// mj_jacDifPair (exported by 2.2.2 outside mujoco.h): Jacobians of points on two bodies and
+/// their difference, over the merged dof chain when sparse; returns the chain length (nv dense).
+#[no_mangle]
+pub unsafe extern "C" fn mj_jacDifPair(
+    m: *const mjModel,
+    d: *const mjData,
+    chain: *mut c_int,
+    b1: c_int,
+    b2: c_int,
+    pos1: *const mjtNum,
+    pos2: *const mjtNum,
+    jac1p: *mut mjtNum,
+    jac2p: *mut mjtNum,
+    jacdifp: *mut mjtNum,
+    jac1r: *mut mjtNum,
+    jac2r: *mut mjtNum,
+    jacdifr: *mut mjtNum,
+) -> c_int {
+    let Some(b1) = checked_id("mj_jacDifPair", m, d, b1, |m| m.nbody) else {
+        return 0;
+    };
+    let Some(b2) = checked_id("mj_jacDifPair", m, d, b2, |m| m.nbody) else {
+        return 0;
+    };
+    let (p1, p2) = (arr3(pos1), arr3(pos2));
+    let rot = !jacdifr.is_null();
+    run_const("mj_jacDifPair", 0, m, d, |mv, dv| {
+        let nv = mv.raw.nv as usize;
+        let (mut j1, mut j2, mut jd) = (vec![0.0; 6 * nv], vec![0.0; 6 * nv], vec![0.0; 6 * nv]);
+        let mut ch = vec![0i32; nv];
+        let n = constraint::jac_dif_pair(
+            mv, dv, &mut ch, b1, b2, &p1, &p2, &mut j1, &mut j2, &mut jd, rot,
+        );
+        let out = |dst: *mut mjtNum, src: &[f64]| {
+            if !dst.is_null() {
+                slice_mut(dst, 3 * n).copy_from_slice(&src[..3 * n]);
+            }
+        };
+        let simple =
+            constraint::is_sparse(mv) && mv.body_simple()[b1] != 0 && mv.body_simple()[b2] != 0;
+        if !simple {
+            out(jac1p, &j1);
+            out(jac2p, &j2);
+            if rot {
+                out(jac1r, &j1[3 * nv..]);
+                out(jac2r, &j2[3 * nv..]);
+            }
+        }
+        out(jacdifp, &jd);
+        if rot {
+            out(jacdifr, &jd[3 * nv..]);
+        }
+        if !chain.is_null() && constraint::is_sparse(mv) {
+            std::slice::from_raw_parts_mut(chain, n).copy_from_slice(&ch[..n]);
+        }
+        Ok(n as c_int)
+    })
+}

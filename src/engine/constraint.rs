@@ -303,7 +303,7 @@ fn jac_sparse_simple(
 /// Jacobian of (b2, pos2) minus that of (b1, pos1) (mj_jacDifPair): translation in
 /// jacdif[..3n], rotation (when `rot`) in jacdif[3nv..3nv+3n]; returns n (nv when dense).
 #[allow(clippy::too_many_arguments)]
-pub(super) fn jac_dif_pair(
+pub fn jac_dif_pair(
     m: &Model,
     d: &Data,
     chain: &mut [i32],
