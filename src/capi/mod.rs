@@ -7,17 +7,13 @@ pub mod errmem;
 pub mod globals;
 pub mod io;
 pub mod lengthrange;
-#[rustfmt::skip]
-pub mod pending;
-#[rustfmt::skip]
-pub mod pending_internal;
 pub mod print;
 pub mod util;
 pub mod xml;
 
 use crate::abi::view::EngineError;
 
-/// Reports an entry point that has no implementation yet.
+/// Reports an entry point that has no implementation yet (none is left; kept for new API).
 pub fn pending(name: &str) {
     errmem::error(&format!("{name} is not implemented"));
 }
