@@ -53,35 +53,6 @@ impl Pairs<'_> {
     }
 }
 
-/// Stable insertion sort: for a consistent comparison the same order as any stable sort, so as
-/// glibc's merge sort; cheaper for the short lists of the broad phase.
-fn insertion_sort<T: Copy>(items: &mut [T], le: &impl Fn(&T, &T) -> bool) {
-    for i in 1..items.len() {
-        let x = items[i];
-        let mut j = i;
-        while j > 0 && !le(&items[j - 1], &x) {
-            items[j] = items[j - 1];
-            j -= 1;
-        }
-        items[j] = x;
-    }
-}
-
-/// Sorts as 2.2.2's qsort_r (glibc: a stable merge sort); `consistent` says the comparison is a
-/// total order (no NaN keys), where a stable insertion sort gives the same result faster.
-pub fn sort<T: Copy>(
-    items: &mut [T],
-    tmp: &mut [T],
-    consistent: bool,
-    le: &impl Fn(&T, &T) -> bool,
-) {
-    if consistent && items.len() <= 32 {
-        insertion_sort(items, le);
-    } else {
-        merge_sort(items, tmp, le);
-    }
-}
-
 /// Stable top-down merge sort of `items` by `less_eq` (glibc's qsort_r, which 2.2.2 calls, is
 /// this merge sort: ties and even inconsistent comparisons come out the same).
 pub fn merge_sort<T: Copy>(items: &mut [T], tmp: &mut [T], le: &impl Fn(&T, &T) -> bool) {
@@ -201,9 +172,9 @@ pub fn broadphase<'a>(
         sweep_and_prune(m, d, a, &frame, &mut pairs)?;
     }
 
+    // integers: any sort gives glibc's order
     let n = pairs.n;
-    let tmp = a.alloc_int(n)?;
-    sort(&mut pairs.pair[..n], tmp, true, &|x, y| x <= y);
+    pairs.pair[..n].sort_unstable();
     Ok(&mut pairs.pair[..n])
 }
 
@@ -241,8 +212,19 @@ fn sweep_and_prune(
     };
     let tmp = a.alloc_int(2 * count)?;
     // 2.2.2's comparison: less -> -1, equal -> 0, else (also NaN) -> 1; merged first if <= 0
-    let consistent = !keys.iter().any(|k| k.is_nan());
-    sort(entries, tmp, consistent, &|x, y| key(x) <= key(y));
+    // without NaN keys the order is total: the stable order is the key order with ties in
+    // creation order (body, then lower before upper end), which an unstable sort reproduces
+    if keys.iter().any(|k| k.is_nan()) {
+        merge_sort(entries, tmp, &|x, y| key(x) <= key(y));
+    } else {
+        entries.sort_unstable_by(|x, y| {
+            key(x)
+                .partial_cmp(&key(y))
+                .unwrap_or(std::cmp::Ordering::Equal)
+                .then((x & 0xFFFF).cmp(&(y & 0xFFFF)))
+                .then(x.cmp(y))
+        });
+    }
 
     let active = a.alloc_int(2 * count)?;
     let mut nactive = 0;
