@@ -1,0 +1,216 @@
+//! Image files for textures and height fields: PNG (decoded to 8-bit RGB or grey the way
+//! 2.2.2's lodepng converts: 16-bit keeps the high byte, grey from colour keeps red, alpha
+//! is dropped) and MuJoCo's custom binary formats.
+
+/// A decoded image: `width * height` pixels of `channels` bytes, rows top to bottom.
+pub struct Image {
+    pub width: usize,
+    pub height: usize,
+    pub data: Vec<u8>,
+}
+
+/// Whether a file name selects the PNG decoder (case-insensitive ".png" suffix).
+pub fn is_png(name: &str) -> bool {
+    name.len() >= 4 && name[name.len() - 4..].eq_ignore_ascii_case(".png")
+}
+
+/// Decodes a PNG to 8-bit RGB (`grey == false`) or 8-bit grey (`grey == true`).
+pub fn decode_png(bytes: &[u8], grey: bool) -> Result<Image, String> {
+    let mut dec = png::Decoder::new(std::io::Cursor::new(bytes));
+    dec.set_transformations(png::Transformations::EXPAND | png::Transformations::STRIP_16);
+    let mut reader = dec.read_info().map_err(|e| e.to_string())?;
+    let size = reader
+        .output_buffer_size()
+        .ok_or_else(|| "image too large".to_string())?;
+    let mut buf = vec![0u8; size];
+    let info = reader.next_frame(&mut buf).map_err(|e| e.to_string())?;
+    let (width, height) = (info.width as usize, info.height as usize);
+    let nc = info.color_type.samples();
+    let out_nc = if grey { 1 } else { 3 };
+    let mut data = Vec::with_capacity(width * height * out_nc);
+    for r in 0..height {
+        let row = &buf[r * info.line_size..r * info.line_size + width * nc];
+        for px in row.chunks_exact(nc) {
+            // grey (+alpha) inputs replicate the grey value; colour inputs keep red for grey
+            let rgb = if nc < 3 {
+                [px[0]; 3]
+            } else {
+                [px[0], px[1], px[2]]
+            };
+            if grey {
+                data.push(rgb[0]);
+            } else {
+                data.extend_from_slice(&rgb);
+            }
+        }
+    }
+    Ok(Image {
+        width,
+        height,
+        data,
+    })
+}
+
+fn read_i32(b: &[u8], i: usize) -> i32 {
+    i32::from_ne_bytes([b[4 * i], b[4 * i + 1], b[4 * i + 2], b[4 * i + 3]])
+}
+
+/// Custom texture file: int32 width, int32 height, then width*height RGB bytes.
+/// `Err(true)` for bad dimensions, `Err(false)` for a bad file size.
+pub fn decode_custom_texture(b: &[u8]) -> Result<Image, bool> {
+    if b.len() < 8 {
+        return Err(true);
+    }
+    let (w, h) = (read_i32(b, 0), read_i32(b, 1));
+    if w < 1 || h < 1 {
+        return Err(true);
+    }
+    let n = (w as usize) * (h as usize) * 3;
+    if b.len() != 8 + n {
+        return Err(false);
+    }
+    Ok(Image {
+        width: w as usize,
+        height: h as usize,
+        data: b[8..].to_vec(),
+    })
+}
+
+/// Custom height field file: int32 nrow, int32 ncol, then nrow*ncol float32.
+/// Returns (nrow, ncol, data) or an error message without the hfield context.
+pub fn decode_custom_hfield(b: &[u8]) -> Result<(usize, usize, Vec<f32>), &'static str> {
+    if b.len() < 8 {
+        return Err("could not read");
+    }
+    let (nrow, ncol) = (read_i32(b, 0), read_i32(b, 1));
+    if nrow < 1 || ncol < 1 {
+        return Err("non-positive hfield dimensions");
+    }
+    let n = (nrow as usize) * (ncol as usize);
+    if b.len() != 8 + 4 * n {
+        return Err("unexpected file size");
+    }
+    let data = (0..n)
+        .map(|i| f32::from_bits(read_i32(b, 2 + i) as u32))
+        .collect();
+    Ok((nrow as usize, ncol as usize, data))
+}
+
+/// Height field from a grey PNG: rows are stored bottom to top.
+pub fn hfield_from_grey(img: &Image) -> Vec<f32> {
+    let (w, h) = (img.width, img.height);
+    let mut data = vec![0f32; w * h];
+    for r in 0..h {
+        for c in 0..w {
+            data[c + (h - 1 - r) * w] = img.data[c + r * w] as f32;
+        }
+    }
+    data
+}
+
+/// Maps elevation to [0, 1] as 2.2.2 does (in f32; a flat field becomes all zero).
+/// Returns false when the range is invalid (empty data).
+pub fn normalize_hfield(data: &mut [f32]) -> bool {
+    let (mut emin, mut emax) = (1e10f32, -1e10f32);
+    for &v in data.iter() {
+        emin = emin.min(v);
+        emax = emax.max(v);
+    }
+    if emin > emax {
+        return false;
+    }
+    for v in data.iter_mut() {
+        *v -= emin;
+        if (emax - emin) as f64 > 1e-15 {
+            *v /= emax - emin;
+        }
+    }
+    true
+}
+
+/// Flips an RGB image in place, horizontally and/or vertically.
+pub fn flip(img: &mut Image, hflip: bool, vflip: bool) {
+    let (w, h) = (img.width, img.height);
+    if hflip {
+        for r in 0..h {
+            for c in 0..w / 2 {
+                let (a, b) = (3 * (r * w + c), 3 * (r * w + w - 1 - c));
+                for k in 0..3 {
+                    img.data.swap(a + k, b + k);
+                }
+            }
+        }
+    }
+    if vflip {
+        for r in 0..h / 2 {
+            for c in 0..w {
+                let (a, b) = (3 * (r * w + c), 3 * ((h - 1 - r) * w + c));
+                for k in 0..3 {
+                    img.data.swap(a + k, b + k);
+                }
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn encode(w: u32, h: u32, ct: png::ColorType, bd: png::BitDepth, data: &[u8]) -> Vec<u8> {
+        let mut out = Vec::new();
+        {
+            let mut enc = png::Encoder::new(&mut out, w, h);
+            enc.set_color(ct);
+            enc.set_depth(bd);
+            let mut wr = enc.write_header().unwrap();
+            wr.write_image_data(data).unwrap();
+        }
+        out
+    }
+
+    #[test]
+    fn rgba_and_16bit_and_grey() {
+        let p = encode(
+            2,
+            1,
+            png::ColorType::Rgba,
+            png::BitDepth::Eight,
+            &[1, 2, 3, 4, 5, 6, 7, 8],
+        );
+        assert_eq!(decode_png(&p, false).unwrap().data, vec![1, 2, 3, 5, 6, 7]);
+        assert_eq!(decode_png(&p, true).unwrap().data, vec![1, 5]);
+        let p = encode(
+            1,
+            1,
+            png::ColorType::Rgb,
+            png::BitDepth::Sixteen,
+            &[9, 1, 8, 2, 7, 3],
+        );
+        assert_eq!(decode_png(&p, false).unwrap().data, vec![9, 8, 7]);
+        let p = encode(
+            4,
+            1,
+            png::ColorType::Grayscale,
+            png::BitDepth::Two,
+            &[0b00_01_10_11],
+        );
+        assert_eq!(decode_png(&p, false).unwrap().data.len(), 12);
+        assert_eq!(decode_png(&p, true).unwrap().data, vec![0, 85, 170, 255]);
+        assert!(decode_png(b"not a png", false).is_err());
+    }
+
+    #[test]
+    fn hfield_rows_and_range() {
+        let img = Image {
+            width: 2,
+            height: 2,
+            data: vec![0, 10, 20, 40],
+        };
+        let mut d = hfield_from_grey(&img);
+        assert_eq!(d, vec![20.0, 40.0, 0.0, 10.0]);
+        assert!(normalize_hfield(&mut d));
+        assert_eq!(d, vec![0.5, 1.0, 0.0, 0.25]);
+        assert!(!normalize_hfield(&mut []));
+    }
+}
