@@ -62,7 +62,9 @@ unsafe fn parse(fname: &str, vfs: *const mjVFS) -> Result<compiler::spec::ModelS
         &mut included,
     )?;
     schema::check(&root)?;
-    reader::read(&root)
+    let mut spec = reader::read(&root)?;
+    compiler::image::load_files(&mut spec, &dir, &mut |f: &str| load_text(f, vfs).ok());
+    Ok(spec)
 }
 
 thread_local! {

@@ -153,6 +153,68 @@ pub fn flip(img: &mut Image, hflip: bool, vflip: bool) {
     }
 }
 
+/// File name as 2.2.2 builds it: absolute names stay, else model dir + asset dir + name.
+pub fn full_name(model_dir: &str, asset_dir: &str, file: &str, strippath: bool) -> String {
+    let file = if strippath {
+        file.rsplit(['/', '\\']).next().unwrap_or(file)
+    } else {
+        file
+    };
+    let absolute = |p: &str| p.starts_with('/') || p.starts_with('\\') || p.get(1..2) == Some(":");
+    if absolute(file) {
+        file.to_string()
+    } else if absolute(asset_dir) {
+        format!("{asset_dir}{file}")
+    } else {
+        format!("{model_dir}{asset_dir}{file}")
+    }
+}
+
+/// Reads the files that height fields name (before compiling, while the VFS is at hand).
+pub fn load_files(
+    spec: &mut crate::compiler::spec::ModelSpec,
+    model_dir: &str,
+    load: &mut dyn FnMut(&str) -> Option<Vec<u8>>,
+) {
+    let c = &spec.compiler;
+    for hf in spec.hfields.iter_mut().filter(|h| !h.file.is_empty()) {
+        let name = full_name(model_dir, &c.meshdir, &hf.file, c.strippath);
+        hf.bytes = load(&name).filter(|b| !b.is_empty());
+        hf.file = name;
+    }
+}
+
+/// Elevation of a height field from its file, normalised; (nrow, ncol, data) or the error.
+pub fn hfield_file(
+    hf: &crate::compiler::spec::HField,
+    id: usize,
+) -> Result<(usize, usize, Vec<f32>), String> {
+    let file = &hf.file;
+    let Some(bytes) = &hf.bytes else {
+        return Err(format!("could not open hfield file '{file}'"));
+    };
+    let (nrow, ncol, mut data) = if is_png(file) {
+        let img = decode_png(bytes, true)
+            .map_err(|e| format!("PNG load error '{e}' in hfield id = {id}"))?;
+        if img.width < 1 || img.height < 1 {
+            return Err(format!(
+                "Zero dimension in PNG hfield '{}' (id = {id})",
+                hf.name
+            ));
+        }
+        (img.height, img.width, hfield_from_grey(&img))
+    } else {
+        decode_custom_hfield(bytes).map_err(|e| match e {
+            "could not read" => format!("hfield missing header '{file}'"),
+            _ => format!("{e} in file '{file}'"),
+        })?
+    };
+    if !normalize_hfield(&mut data) {
+        return Err(format!("invalid data range in hfield '{file}'"));
+    }
+    Ok((nrow, ncol, data))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

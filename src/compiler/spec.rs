@@ -505,6 +505,10 @@ pub struct HField {
     pub nrow: i32,
     pub ncol: i32,
     pub size: [f64; 4],
+    /// contents of `file` (None when it could not be read), set before compiling
+    pub bytes: Option<Vec<u8>>,
+    /// elevation (rows bottom to top), empty for an all-zero field
+    pub data: Vec<f32>,
 }
 
 /// `<texture>`; `kind` 0 2d, 1 cube, 2 skybox; `builtin` none, gradient, checker, flat;
@@ -692,11 +696,17 @@ pub struct CompilerOpts {
     pub lr_mode: i32,
     pub lr_useexisting: bool,
     pub lr_uselimit: bool,
+    pub meshdir: String,
+    pub texturedir: String,
+    pub strippath: bool,
 }
 
 impl Default for CompilerOpts {
     fn default() -> Self {
         CompilerOpts {
+            meshdir: String::new(),
+            texturedir: String::new(),
+            strippath: false,
             autolimits: false,
             boundmass: 0.0,
             boundinertia: 0.0,

@@ -184,7 +184,7 @@ fn user_len(lens: impl Iterator<Item = usize>, given: i32) -> usize {
     }
 }
 
-pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
+pub fn compile(mut spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
     let opts = spec.compiler.clone();
     let settings = Settings {
         degree: opts.degree,
@@ -611,18 +611,22 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
     let sites: Vec<FSite> = sites.into_iter().flatten().collect();
 
     // height fields: elevation is all zero without a file
-    for (id, hf) in spec.hfields.iter().enumerate() {
-        let name = &hf.name;
-        let err = |m: String| CError::at(m, name, id, hf.line);
+    for (id, hf) in spec.hfields.iter_mut().enumerate() {
+        let (name, line) = (hf.name.clone(), hf.line);
+        let err = |m: String| CError::at(m, &name, id, line);
         if hf.size.iter().any(|&s| s <= 0.0) {
             return Err(err(format!(
                 "size parameter is not positive in hfield '{name}' (id = {id})"
             )));
         }
         if !hf.file.is_empty() {
-            return Err(err(
-                "height fields from files are not supported by this compiler yet".into(),
-            ));
+            if hf.nrow != 0 || hf.ncol != 0 {
+                return Err(err(format!(
+                    "hfield '{name}' (id = {id}) specified from file and manually"
+                )));
+            }
+            let (nrow, ncol, data) = super::image::hfield_file(hf, id).map_err(err)?;
+            (hf.nrow, hf.ncol, hf.data) = (nrow as i32, ncol as i32, data);
         }
         if hf.nrow < 1 || hf.ncol < 1 {
             return Err(err(format!("hfield '{name}' (id = {id}) not specified")));
@@ -2186,6 +2190,8 @@ impl Compiled {
             m.hfield_nrow[i] = hf.nrow;
             m.hfield_ncol[i] = hf.ncol;
             m.hfield_adr[i] = adr;
+            let a = adr as usize;
+            m.hfield_data[a..a + hf.data.len()].copy_from_slice(&hf.data);
             adr += hf.nrow * hf.ncol;
         }
         for (g, hf) in self.geom_hfield.iter().enumerate() {

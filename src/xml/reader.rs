@@ -1104,6 +1104,9 @@ fn read_compiler(spec: &mut ModelSpec, el: &Element) -> R<()> {
         "exactmeshinertia",
     ] {
         if let Some(b) = boolean(el, flag)? {
+            if flag == "strippath" {
+                c.strippath = b;
+            }
             if flag == "fusestatic" && b {
                 return Err(xerr(
                     el,
@@ -1112,6 +1115,8 @@ fn read_compiler(spec: &mut ModelSpec, el: &Element) -> R<()> {
             }
         }
     }
+    text(el, "meshdir", &mut c.meshdir);
+    text(el, "texturedir", &mut c.texturedir);
     if let Some(i) = keyword(el, "coordinate", &["local", "global"])? {
         c.global = i == 1;
     }
