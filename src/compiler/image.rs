@@ -182,6 +182,143 @@ pub fn load_files(
         hf.bytes = load(&name).filter(|b| !b.is_empty());
         hf.file = name;
     }
+    for t in spec.textures.iter_mut() {
+        for k in 0..7 {
+            if !t.file_names[k].is_empty() {
+                let name = full_name(model_dir, &c.texturedir, &t.file_names[k], c.strippath);
+                t.bytes[k] = load(&name).filter(|b| !b.is_empty());
+                t.file_names[k] = name;
+            }
+        }
+    }
+}
+
+/// One texture image file, decoded (PNG or custom) and flipped as the texture asks.
+fn texture_image(t: &crate::compiler::spec::Texture, k: usize, id: usize) -> Result<Image, String> {
+    let file = &t.file_names[k];
+    let bytes = t.bytes[k].as_deref();
+    let mut img = if is_png(file) {
+        let img = match bytes {
+            Some(b) => decode_png(b, false),
+            None => Err("failed to open file for reading".to_string()),
+        }
+        .map_err(|e| format!("PNG file load error '{e}' in texture id = {id}"))?;
+        if img.width < 1 || img.height < 1 {
+            return Err(format!("Empty PNG file in texture '{file}' (id {id})"));
+        }
+        img
+    } else {
+        let b = bytes.ok_or_else(|| format!("could not open texture file '{file}'"))?;
+        decode_custom_texture(b).map_err(|dims| {
+            let what = if dims {
+                "non-positive texture dimensions"
+            } else {
+                "unexpected file size"
+            };
+            format!("Non-PNG texture, assuming custom binary file format,\n{what} in file '{file}'")
+        })?
+    };
+    flip(&mut img, t.hflip, t.vflip);
+    Ok(img)
+}
+
+/// Fills the faces not loaded with rgb1.
+fn fill_faces(rgb: &mut [u8], width: usize, loaded: &[bool; 6], rgb1: &[f64; 3]) {
+    let face = 3 * width * width;
+    for (i, _) in loaded.iter().enumerate().filter(|(_, l)| !**l) {
+        for px in rgb[i * face..(i + 1) * face].chunks_exact_mut(3) {
+            for j in 0..3 {
+                px[j] = (255.0 * rgb1[j]) as u8;
+            }
+        }
+    }
+}
+
+/// A texture from files: (width, height, rgb) or the error message.
+pub fn texture_files(
+    t: &crate::compiler::spec::Texture,
+    id: usize,
+) -> Result<(usize, usize, Vec<u8>), String> {
+    if !t.file_names[0].is_empty() {
+        if t.kind == 0 {
+            let img = texture_image(t, 0, id)?;
+            return Ok((img.width, img.height, img.data));
+        }
+        let g = t.gridsize;
+        if g[0] < 1 || g[1] < 1 || g[0] * g[1] > 12 {
+            return Err(format!(
+                "gridsize must be non-zero and no more than 12 squares in texture '{}' (id {id})",
+                t.name
+            ));
+        }
+        let img = texture_image(t, 0, id)?;
+        let (w, h) = (img.width, img.height);
+        let (g0, g1) = (g[0] as usize, g[1] as usize);
+        if w / g1 != h / g0 || w % g1 != 0 || h % g0 != 0 {
+            return Err(format!(
+                "PNG size must be integer multiple of gridsize in texture '{}' (id {id})",
+                t.file_names[0]
+            ));
+        }
+        if g0 == 1 && g1 == 1 {
+            return Ok((w, w, img.data[..3 * w * w].to_vec()));
+        }
+        let width = w / g1;
+        let mut rgb = vec![0u8; 3 * width * 6 * width];
+        let mut loaded = [false; 6];
+        let layout = t.gridlayout.as_bytes();
+        for k in 0..g0 * g1 {
+            let sym = layout.get(k).copied().unwrap_or(0);
+            let i = match b"RLUDFB".iter().position(|&s| s == sym) {
+                Some(i) => i,
+                None if sym == b'.' => continue,
+                None => {
+                    return Err(format!(
+                        "gridlayout symbol is not among '.RLUDFB' in texture '{}' (id {id})",
+                        t.file_names[0]
+                    ))
+                }
+            };
+            let (rstart, cstart) = (width * (k / g1), width * (k % g1));
+            for j in 0..width {
+                let src = (j + rstart) * 3 * w + 3 * cstart;
+                let dst = i * 3 * width * width + j * 3 * width;
+                rgb[dst..dst + 3 * width].copy_from_slice(&img.data[src..src + 3 * width]);
+            }
+            loaded[i] = true;
+        }
+        fill_faces(&mut rgb, width, &loaded, &t.rgb1);
+        return Ok((width, 6 * width, rgb));
+    }
+    // separate cube faces
+    let mut rgb: Vec<u8> = Vec::new();
+    let mut width = 0;
+    let mut loaded = [false; 6];
+    for i in 0..6 {
+        if t.file_names[i + 1].is_empty() {
+            continue;
+        }
+        let short = t.file_names[i + 1].rsplit(['/', '\\']).next().unwrap_or("");
+        let img = texture_image(t, i + 1, id)?;
+        if img.width != img.height {
+            return Err(format!(
+                "Non-square PNG file '{short}' in cube or skybox id {id}"
+            ));
+        }
+        if rgb.is_empty() {
+            width = img.width;
+            rgb = vec![0u8; 3 * width * 6 * width];
+        } else if width != img.width {
+            return Err(format!(
+                "PNG file '{short}' has incompatible size in texture id {id}"
+            ));
+        }
+        let face = 3 * width * width;
+        rgb[i * face..(i + 1) * face].copy_from_slice(&img.data[..face]);
+        loaded[i] = true;
+    }
+    fill_faces(&mut rgb, width, &loaded, &t.rgb1);
+    Ok((width, 6 * width, rgb))
 }
 
 /// Elevation of a height field from its file, normalised; (nrow, ncol, data) or the error.

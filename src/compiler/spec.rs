@@ -526,8 +526,16 @@ pub struct Texture {
     pub random: f64,
     pub width: i32,
     pub height: i32,
-    /// file names (single or per cube face): not supported yet
+    /// whether any file attribute is given
     pub files: bool,
+    /// `file`, then `fileright`, `fileleft`, `fileup`, `filedown`, `filefront`, `fileback`
+    pub file_names: [String; 7],
+    /// contents of those files (None when missing or unreadable), set before compiling
+    pub bytes: [Option<Vec<u8>>; 7],
+    pub gridsize: [i32; 2],
+    pub gridlayout: String,
+    pub hflip: bool,
+    pub vflip: bool,
 }
 
 impl Default for Texture {
@@ -545,6 +553,12 @@ impl Default for Texture {
             width: 0,
             height: 0,
             files: false,
+            file_names: Default::default(),
+            bytes: Default::default(),
+            gridsize: [1, 1],
+            gridlayout: "............".into(),
+            hflip: false,
+            vflip: false,
         }
     }
 }

@@ -659,10 +659,9 @@ pub fn compile(mut spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> 
             }
             let rgb = super::texture::builtin(t, width, height, &mut rng);
             textures.push((t.kind, width as i32, height as i32, rgb));
-        } else if t.files {
-            return Err(err(
-                "textures from files are not supported by this compiler yet".into(),
-            ));
+        } else if !t.file_names[0].is_empty() || (t.kind != 0 && t.files) {
+            let (w, h, rgb) = super::image::texture_files(t, id).map_err(err)?;
+            textures.push((t.kind, w as i32, h as i32, rgb));
         } else if t.kind == 0 {
             return Err(err(format!(
                 "Cannot load 2D texture from separate files, texture '{name}' (id {id})"
