@@ -160,7 +160,13 @@ pub fn full_name(model_dir: &str, asset_dir: &str, file: &str, strippath: bool) 
     } else {
         file
     };
-    let absolute = |p: &str| p.starts_with('/') || p.starts_with('\\') || p.get(1..2) == Some(":");
+    let absolute = |p: &str| p.starts_with(['/', '\\']) || p.contains(":/") || p.contains(":\\");
+    // a non-empty asset directory ends with a separator
+    let mut asset_dir = asset_dir.to_string();
+    if !asset_dir.is_empty() && !asset_dir.ends_with(['/', '\\']) {
+        asset_dir.push('/');
+    }
+    let asset_dir = asset_dir.as_str();
     if absolute(file) {
         file.to_string()
     } else if absolute(asset_dir) {
