@@ -16,6 +16,13 @@ pub fn is_png(name: &str) -> bool {
 
 /// Decodes a PNG to 8-bit RGB (`grey == false`) or 8-bit grey (`grey == true`).
 pub fn decode_png(bytes: &[u8], grey: bool) -> Result<Image, String> {
+    // lodepng's texts for the commonest failures; others come from the png crate
+    if bytes.len() < 29 {
+        return Err("PNG file is smaller than a PNG header".into());
+    }
+    if bytes[..8] != [137, 80, 78, 71, 13, 10, 26, 10] {
+        return Err("incorrect PNG signature, it's no PNG or corrupted".into());
+    }
     let mut dec = png::Decoder::new(std::io::Cursor::new(bytes));
     dec.set_transformations(png::Transformations::EXPAND | png::Transformations::STRIP_16);
     let mut reader = dec.read_info().map_err(|e| e.to_string())?;
@@ -333,12 +340,12 @@ pub fn hfield_file(
     id: usize,
 ) -> Result<(usize, usize, Vec<f32>), String> {
     let file = &hf.file;
-    let Some(bytes) = &hf.bytes else {
-        return Err(format!("could not open hfield file '{file}'"));
-    };
     let (nrow, ncol, mut data) = if is_png(file) {
-        let img = decode_png(bytes, true)
-            .map_err(|e| format!("PNG load error '{e}' in hfield id = {id}"))?;
+        let img = match &hf.bytes {
+            Some(b) => decode_png(b, true),
+            None => Err("failed to open file for reading".to_string()),
+        }
+        .map_err(|e| format!("PNG load error '{e}' in hfield id = {id}"))?;
         if img.width < 1 || img.height < 1 {
             return Err(format!(
                 "Zero dimension in PNG hfield '{}' (id = {id})",
@@ -347,6 +354,9 @@ pub fn hfield_file(
         }
         (img.height, img.width, hfield_from_grey(&img))
     } else {
+        let Some(bytes) = &hf.bytes else {
+            return Err(format!("could not open hfield file '{file}'"));
+        };
         decode_custom_hfield(bytes).map_err(|e| match e {
             "could not read" => format!("hfield missing header '{file}'"),
             _ => format!("{e} in file '{file}'"),
