@@ -149,10 +149,18 @@ fn save_last_xml_round_trip() {
             continue; // a model ours rejects has nothing to save
         };
         tried += 1;
-        // models ours loads use no asset files, so the saved file can live in our work
-        // directory (never in the shared corpus, which other test runs read)
-        let saved = work_dir("xml_io")
-            .join("round-trip.xml")
+        // the saved file goes into a directory of links to the model's directory, so that its
+        // asset files resolve (never into the shared corpus, which other test runs read)
+        let dir = work_dir("xml_io").join("round-trip");
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        if let Some(parent) = std::path::Path::new(m).parent() {
+            for e in std::fs::read_dir(parent).into_iter().flatten().flatten() {
+                let _ = std::os::unix::fs::symlink(e.path(), dir.join(e.file_name()));
+            }
+        }
+        let saved = dir
+            .join("_rujoco_round_trip.xml")
             .to_string_lossy()
             .into_owned();
         let s = run(&o, &["save", m, &saved], &[], 120);

@@ -78,7 +78,8 @@ unsafe fn parse(
         &mut included,
     )?;
     schema::check(&root)?;
-    let spec = reader::read(&root)?;
+    let mut spec = reader::read(&root)?;
+    compiler::image::load_files(&mut spec, &dir, &mut |f: &str| load_text(f, vfs).ok());
     Ok((root, spec))
 }
 

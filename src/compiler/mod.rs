@@ -4,6 +4,7 @@
 //! with the sizes it found; `set_const` runs the engine's qpos0-dependent constants.
 
 pub mod frame;
+pub mod image;
 pub mod objects;
 pub mod spec;
 #[cfg(test)]

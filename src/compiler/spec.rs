@@ -505,6 +505,10 @@ pub struct HField {
     pub nrow: i32,
     pub ncol: i32,
     pub size: [f64; 4],
+    /// contents of `file` (None when it could not be read), set before compiling
+    pub bytes: Option<Vec<u8>>,
+    /// elevation (rows bottom to top), empty for an all-zero field
+    pub data: Vec<f32>,
 }
 
 /// `<texture>`; `kind` 0 2d, 1 cube, 2 skybox; `builtin` none, gradient, checker, flat;
@@ -522,8 +526,16 @@ pub struct Texture {
     pub random: f64,
     pub width: i32,
     pub height: i32,
-    /// file names (single or per cube face): not supported yet
+    /// whether any file attribute is given
     pub files: bool,
+    /// `file`, then `fileright`, `fileleft`, `fileup`, `filedown`, `filefront`, `fileback`
+    pub file_names: [String; 7],
+    /// contents of those files (None when missing or unreadable), set before compiling
+    pub bytes: [Option<Vec<u8>>; 7],
+    pub gridsize: [i32; 2],
+    pub gridlayout: String,
+    pub hflip: bool,
+    pub vflip: bool,
 }
 
 impl Default for Texture {
@@ -541,6 +553,12 @@ impl Default for Texture {
             width: 0,
             height: 0,
             files: false,
+            file_names: Default::default(),
+            bytes: Default::default(),
+            gridsize: [1, 1],
+            gridlayout: "............".into(),
+            hflip: false,
+            vflip: false,
         }
     }
 }
@@ -694,11 +712,17 @@ pub struct CompilerOpts {
     pub lr_uselimit: bool,
     /// accel, maxforce, timeconst, timestep, inttotal, inteval, tolrange
     pub lr_numbers: [f64; 7],
+    pub meshdir: String,
+    pub texturedir: String,
+    pub strippath: bool,
 }
 
 impl Default for CompilerOpts {
     fn default() -> Self {
         CompilerOpts {
+            meshdir: String::new(),
+            texturedir: String::new(),
+            strippath: false,
             autolimits: false,
             boundmass: 0.0,
             boundinertia: 0.0,

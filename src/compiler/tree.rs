@@ -186,7 +186,7 @@ fn user_len(lens: impl Iterator<Item = usize>, given: i32) -> usize {
     }
 }
 
-pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
+pub fn compile(mut spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
     let opts = spec.compiler.clone();
     let settings = Settings {
         degree: opts.degree,
@@ -613,18 +613,22 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
     let sites: Vec<FSite> = sites.into_iter().flatten().collect();
 
     // height fields: elevation is all zero without a file
-    for (id, hf) in spec.hfields.iter().enumerate() {
-        let name = &hf.name;
-        let err = |m: String| CError::at(m, name, id, hf.line);
+    for (id, hf) in spec.hfields.iter_mut().enumerate() {
+        let (name, line) = (hf.name.clone(), hf.line);
+        let err = |m: String| CError::at(m, &name, id, line);
         if hf.size.iter().any(|&s| s <= 0.0) {
             return Err(err(format!(
                 "size parameter is not positive in hfield '{name}' (id = {id})"
             )));
         }
         if !hf.file.is_empty() {
-            return Err(err(
-                "height fields from files are not supported by this compiler yet".into(),
-            ));
+            if hf.nrow != 0 || hf.ncol != 0 {
+                return Err(err(format!(
+                    "hfield '{name}' (id = {id}) specified from file and manually"
+                )));
+            }
+            let (nrow, ncol, data) = super::image::hfield_file(hf, id).map_err(err)?;
+            (hf.nrow, hf.ncol, hf.data) = (nrow as i32, ncol as i32, data);
         }
         if hf.nrow < 1 || hf.ncol < 1 {
             return Err(err(format!("hfield '{name}' (id = {id}) not specified")));
@@ -657,10 +661,9 @@ pub fn compile(spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> {
             }
             let rgb = super::texture::builtin(t, width, height, &mut rng);
             textures.push((t.kind, width as i32, height as i32, rgb));
-        } else if t.files {
-            return Err(err(
-                "textures from files are not supported by this compiler yet".into(),
-            ));
+        } else if !t.file_names[0].is_empty() || (t.kind != 0 && t.files) {
+            let (w, h, rgb) = super::image::texture_files(t, id).map_err(err)?;
+            textures.push((t.kind, w as i32, h as i32, rgb));
         } else if t.kind == 0 {
             return Err(err(format!(
                 "Cannot load 2D texture from separate files, texture '{name}' (id {id})"
@@ -2176,6 +2179,8 @@ impl Compiled {
             m.hfield_nrow[i] = hf.nrow;
             m.hfield_ncol[i] = hf.ncol;
             m.hfield_adr[i] = adr;
+            let a = adr as usize;
+            m.hfield_data[a..a + hf.data.len()].copy_from_slice(&hf.data);
             adr += hf.nrow * hf.ncol;
         }
         for (g, hf) in self.geom_hfield.iter().enumerate() {

@@ -838,8 +838,16 @@ fn read_assets(spec: &mut ModelSpec, el: &Element) -> R<()> {
                 if let Some(i) = keyword(c, "mark", &["none", "edge", "cross", "random"])? {
                     t.mark = i as i32;
                 }
-                boolean(c, "hflip")?;
-                boolean(c, "vflip")?;
+                t.hflip = boolean(c, "hflip")?.unwrap_or(false);
+                t.vflip = boolean(c, "vflip")?.unwrap_or(false);
+                if let Some(g) = c.attr("gridsize") {
+                    for (k, v) in g.split_whitespace().take(2).enumerate() {
+                        t.gridsize[k] = v
+                            .parse()
+                            .map_err(|_| xerr(c, "problem reading attribute 'gridsize'"))?;
+                    }
+                }
+                text(c, "gridlayout", &mut t.gridlayout);
                 let files = [
                     "file",
                     "fileright",
@@ -850,6 +858,9 @@ fn read_assets(spec: &mut ModelSpec, el: &Element) -> R<()> {
                     "fileback",
                 ];
                 t.files = files.iter().any(|f| c.attr(f).is_some());
+                for (k, f) in files.iter().enumerate() {
+                    text(c, f, &mut t.file_names[k]);
+                }
                 spec.textures.push(t);
             }
             "hfield" => {
@@ -1104,6 +1115,9 @@ fn read_compiler(spec: &mut ModelSpec, el: &Element) -> R<()> {
         "exactmeshinertia",
     ] {
         if let Some(b) = boolean(el, flag)? {
+            if flag == "strippath" {
+                c.strippath = b;
+            }
             if flag == "fusestatic" && b {
                 return Err(xerr(
                     el,
@@ -1112,6 +1126,8 @@ fn read_compiler(spec: &mut ModelSpec, el: &Element) -> R<()> {
             }
         }
     }
+    text(el, "meshdir", &mut c.meshdir);
+    text(el, "texturedir", &mut c.texturedir);
     if let Some(i) = keyword(el, "coordinate", &["local", "global"])? {
         c.global = i == 1;
     }
