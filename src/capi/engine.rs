@@ -1483,8 +1483,19 @@ pub unsafe extern "C" fn mj_jacDifPair(
         let nv = mv.raw.nv as usize;
         let (mut j1, mut j2, mut jd) = (vec![0.0; 6 * nv], vec![0.0; 6 * nv], vec![0.0; 6 * nv]);
         let mut ch = vec![0i32; nv];
-        let n = constraint::jac_dif_pair(
-            mv, dv, &mut ch, b1, b2, &p1, &p2, &mut j1, &mut j2, &mut jd, rot,
+        let n = engine::jacdif::jac_dif_pair(
+            mv,
+            dv.cdof,
+            dv.subtree_com,
+            &mut ch,
+            b1,
+            b2,
+            &p1,
+            &p2,
+            &mut j1,
+            &mut j2,
+            &mut jd,
+            rot,
         );
         let out = |dst: *mut mjtNum, src: &[f64]| {
             if !dst.is_null() {

@@ -4,8 +4,7 @@
 //! solvers, and the constraint-state update of the primal cost. Contact rows: see contact.rs.
 
 use super::inertia::solve_m2;
-use super::jacdif::{merge_chain, merge_chain_simple};
-use super::jacobian::jac;
+pub use super::jacdif::jac_dif_pair;
 use super::linalg::{max, min};
 use super::support::warning;
 use super::{disabled, not_implemented, Data, EngineError, Model, MINVAL};
@@ -215,195 +214,6 @@ pub(super) fn add_rows(
     Ok(true)
 }
 
-/// Point Jacobian in the columns of `chain` (mj_jacSparse): rows of length n = chain.len().
-fn jac_sparse(
-    m: &Model,
-    d: &Data,
-    jacp: &mut [f64],
-    jacr: Option<&mut [f64]>,
-    point: &Vec3,
-    body: usize,
-    chain: &[i32],
-) {
-    let n = chain.len();
-    jacp[..3 * n].fill(0.0);
-    let mut jacr = jacr;
-    if let Some(r) = jacr.as_deref_mut() {
-        r[..3 * n].fill(0.0);
-    }
-    let offset = sub3(
-        point,
-        &v3(&d.subtree_com[3 * m.body_rootid()[body] as usize..]),
-    );
-    let mut b = body;
-    while b != 0 && m.body_dofnum()[b] == 0 {
-        b = m.body_parentid()[b] as usize;
-    }
-    if b == 0 {
-        return;
-    }
-    let mut da = m.body_dofadr()[b] + m.body_dofnum()[b] - 1;
-    let mut ci = n as isize - 1;
-    while da >= 0 {
-        while ci >= 0 && chain[ci as usize] > da {
-            ci -= 1;
-        }
-        let (c, k) = (&d.cdof[6 * da as usize..6 * da as usize + 6], ci as usize);
-        if let Some(r) = jacr.as_deref_mut() {
-            r[k] = c[0];
-            r[k + n] = c[1];
-            r[k + 2 * n] = c[2];
-        }
-        let t = cross(&v3(c), &offset);
-        jacp[k] = c[3] + t[0];
-        jacp[k + n] = c[4] + t[1];
-        jacp[k + 2 * n] = c[5] + t[2];
-        da = m.dof_parentid()[da as usize];
-    }
-}
-
-/// Signed Jacobian columns of a simple body's own dofs from column `start` (mj_jacSparseSimple).
-#[allow(clippy::too_many_arguments)]
-fn jac_sparse_simple(
-    m: &Model,
-    d: &Data,
-    jacdifp: &mut [f64],
-    jacdifr: Option<&mut [f64]>,
-    point: &Vec3,
-    body: usize,
-    second: bool,
-    n: usize,
-    start: usize,
-) {
-    let offset = sub3(
-        point,
-        &v3(&d.subtree_com[3 * m.body_rootid()[body] as usize..]),
-    );
-    if m.body_dofnum()[body] == 0 {
-        return;
-    }
-    let mut jacdifr = jacdifr;
-    let adr = m.body_dofadr()[body] as usize;
-    for (k, da) in (adr..adr + m.body_dofnum()[body] as usize).enumerate() {
-        let ci = start + k;
-        let c = &d.cdof[6 * da..6 * da + 6];
-        if let Some(r) = jacdifr.as_deref_mut() {
-            for a in 0..3 {
-                r[ci + a * n] = if second { c[a] } else { -c[a] };
-            }
-        }
-        let t = cross(&v3(c), &offset);
-        for a in 0..3 {
-            let v = c[3 + a] + t[a];
-            jacdifp[ci + a * n] = if second { v } else { -v };
-        }
-    }
-}
-
-/// Jacobian of (b2, pos2) minus that of (b1, pos1) (mj_jacDifPair): translation in
-/// jacdif[..3n], rotation (when `rot`) in jacdif[3nv..3nv+3n]; returns n (nv when dense).
-#[allow(clippy::too_many_arguments)]
-pub fn jac_dif_pair(
-    m: &Model,
-    d: &Data,
-    chain: &mut [i32],
-    b1: usize,
-    b2: usize,
-    pos1: &Vec3,
-    pos2: &Vec3,
-    jac1: &mut [f64],
-    jac2: &mut [f64],
-    jacdif: &mut [f64],
-    rot: bool,
-) -> usize {
-    let nv = m.raw.nv as usize;
-    if nv == 0 {
-        return 0;
-    }
-    let simple = m.body_simple()[b1] != 0 && m.body_simple()[b2] != 0;
-    let sparse = is_sparse(m);
-    let n = if !sparse {
-        nv
-    } else if simple {
-        merge_chain_simple(m, chain, b1, b2)
-    } else {
-        merge_chain(m, chain, b1, b2)
-    };
-    if n == 0 {
-        return 0;
-    }
-    let (j1p, j1r) = jac1.split_at_mut(3 * nv);
-    let (j2p, j2r) = jac2.split_at_mut(3 * nv);
-    let (jdp, jdr) = jacdif.split_at_mut(3 * nv);
-    fn pick(r: &mut [f64], rot: bool) -> Option<&mut [f64]> {
-        if rot {
-            Some(r)
-        } else {
-            None
-        }
-    }
-    if sparse && simple {
-        let (n1, n2) = (m.body_dofnum()[b1] as usize, m.body_dofnum()[b2] as usize);
-        let s1 = if b1 < b2 { 0 } else { n2 };
-        let s2 = if b2 < b1 { 0 } else { n1 };
-        jac_sparse_simple(
-            m,
-            d,
-            jdp,
-            if rot { Some(&mut *jdr) } else { None },
-            pos1,
-            b1,
-            false,
-            n,
-            s1,
-        );
-        jac_sparse_simple(
-            m,
-            d,
-            jdp,
-            if rot { Some(&mut *jdr) } else { None },
-            pos2,
-            b2,
-            true,
-            n,
-            s2,
-        );
-        return n;
-    }
-    if sparse {
-        jac_sparse(m, d, j1p, pick(j1r, rot), pos1, b1, &chain[..n]);
-        jac_sparse(m, d, j2p, pick(j2r, rot), pos2, b2, &chain[..n]);
-    } else {
-        jac(
-            m,
-            d.cdof,
-            d.subtree_com,
-            pos1,
-            b1,
-            Some(j1p),
-            pick(j1r, rot),
-        );
-        jac(
-            m,
-            d.cdof,
-            d.subtree_com,
-            pos2,
-            b2,
-            Some(j2p),
-            pick(j2r, rot),
-        );
-    }
-    for k in 0..3 * n {
-        jdp[k] = j2p[k] - j1p[k];
-    }
-    if rot {
-        for k in 0..3 * n {
-            jdr[k] = j2r[k] - j1r[k];
-        }
-    }
-    n
-}
-
 /// Copies tendon i's Jacobian row into `jacobian` (dense: nv values; sparse: its nonzeros, with
 /// their dofs in `chain`); returns the sparse length (0 when dense).
 fn tendon_row(m: &Model, d: &Data, i: usize, jacobian: &mut [f64], chain: &mut [i32]) -> usize {
@@ -455,7 +265,20 @@ fn equality(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> {
                 }
                 cpos[..3].copy_from_slice(&sub3(&pos[0], &pos[1]));
                 let (b0, b1) = (id[0] as usize, id[1] as usize);
-                n = jac_dif_pair(m, d, chain, b1, b0, &pos[1], &pos[0], j1, j0, jd, weld);
+                n = jac_dif_pair(
+                    m,
+                    d.cdof,
+                    d.subtree_com,
+                    chain,
+                    b1,
+                    b0,
+                    &pos[1],
+                    &pos[0],
+                    j1,
+                    j0,
+                    jd,
+                    weld,
+                );
                 j0[..3 * n].copy_from_slice(&jd[..3 * n]);
                 if weld {
                     j0[3 * n..6 * n].copy_from_slice(&jd[3 * nv..3 * nv + 3 * n]);

@@ -2,7 +2,8 @@
 //! (mj_instantiateContact: frictionless, pyramidal edges or elliptic dimensions), their
 //! approximate inverse inertia, and the friction-dimension regularisation (impratio, mu).
 
-use super::constraint::{add_rows, jac_dif_pair};
+use super::constraint::add_rows;
+use super::jacdif::jac_dif_pair;
 use super::support::warning;
 use super::{disabled, Data, EngineError, Model, MINVAL};
 use crate::abi::view::Arena;
@@ -57,7 +58,8 @@ pub fn instantiate(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineE
         d.contact[i].efc_address = d.raw.nefc;
         let n = jac_dif_pair(
             m,
-            d,
+            d.cdof,
+            d.subtree_com,
             chain,
             b1,
             b2,

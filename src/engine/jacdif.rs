@@ -59,18 +59,24 @@ pub fn merge_chain_simple(m: &Model, chain: &mut [i32], b1: usize, b2: usize) ->
     n1 + n2
 }
 
-/// Translational Jacobian (3 x nc, columns = chain entries) of a point on `body` (mj_jacSparse).
+/// Jacobian of a point on `body` in the columns of `chain` (mj_jacSparse): translation in
+/// `jacp` and, when given, rotation in `jacr`, each 3 x nc with nc = chain.len().
+#[allow(clippy::too_many_arguments)]
 pub fn jac_sparse(
     m: &Model,
     cdof: &[f64],
     subtree_com: &[f64],
     jacp: &mut [f64],
+    mut jacr: Option<&mut [f64]>,
     point: &Vec3,
     body: usize,
     chain: &[i32],
 ) {
     let nc = chain.len();
     jacp[..3 * nc].fill(0.0);
+    if let Some(r) = jacr.as_deref_mut() {
+        r[..3 * nc].fill(0.0);
+    }
     let root = m.body_rootid()[body] as usize;
     let offset = sub3(point, &v3(&subtree_com[3 * root..]));
     let b = movable(m, body);
@@ -84,8 +90,13 @@ pub fn jac_sparse(
             ci -= 1;
         }
         let c = &cdof[6 * da as usize..6 * da as usize + 6];
-        let t = cross(&v3(c), &offset);
         let k = ci as usize;
+        if let Some(r) = jacr.as_deref_mut() {
+            r[k] = c[0];
+            r[k + nc] = c[1];
+            r[k + 2 * nc] = c[2];
+        }
+        let t = cross(&v3(c), &offset);
         jacp[k] = c[3] + t[0];
         jacp[k + nc] = c[4] + t[1];
         jacp[k + 2 * nc] = c[5] + t[2];
@@ -93,14 +104,15 @@ pub fn jac_sparse(
     }
 }
 
-/// Writes +/- the translational Jacobian of a simple body's own dofs into columns from
-/// `start` of the 3 x nc difference (mj_jacSparseSimple).
+/// Writes +/- the Jacobian of a simple body's own dofs into columns from `start` of the
+/// 3 x nc differences (translation, and rotation when given) (mj_jacSparseSimple).
 #[allow(clippy::too_many_arguments)]
 fn jac_sparse_simple(
     m: &Model,
     cdof: &[f64],
     subtree_com: &[f64],
-    jacdif: &mut [f64],
+    jacdifp: &mut [f64],
+    mut jacdifr: Option<&mut [f64]>,
     point: &Vec3,
     body: usize,
     second: bool,
@@ -110,19 +122,25 @@ fn jac_sparse_simple(
     let root = m.body_rootid()[body] as usize;
     let offset = sub3(point, &v3(&subtree_com[3 * root..]));
     let adr = m.body_dofadr()[body].max(0) as usize;
-    for (k, da) in (adr..adr + m.body_dofnum()[body] as usize).enumerate() {
+    let sign = |x: f64| if second { x } else { -x };
+    for (k, da) in (adr..adr + m.body_dofnum()[body].max(0) as usize).enumerate() {
         let c = &cdof[6 * da..6 * da + 6];
+        if let Some(r) = jacdifr.as_deref_mut() {
+            for a in 0..3 {
+                r[start + k + a * nc] = sign(c[a]);
+            }
+        }
         let t = cross(&v3(c), &offset);
-        let v = [c[3] + t[0], c[4] + t[1], c[5] + t[2]];
-        for r in 0..3 {
-            jacdif[start + k + r * nc] = if second { v[r] } else { -v[r] };
+        for a in 0..3 {
+            jacdifp[start + k + a * nc] = sign(c[3 + a] + t[a]);
         }
     }
 }
 
-/// Translational Jacobian difference jac(pos2 on b2) - jac(pos1 on b1) (mj_jacDifPair).
-/// Dense: 3 x nv in `jacdif`. Sparse: 3 x NV over the merged chain written to `chain`.
-/// `jac1`, `jac2` are 3*nv scratch. Returns the number of columns (0: nothing to do).
+/// Jacobian difference jac(pos2 on b2) - jac(pos1 on b1) (mj_jacDifPair): translation in
+/// `jacdif[..3n]` and, with `rot`, rotation in `jacdif[3nv..3nv + 3n]`; `jac1`, `jac2` hold the
+/// two Jacobians the same way (scratch of 3nv, or 6nv with `rot`). Dense: n = nv; sparse: the
+/// merged chain of n dofs is written to `chain`. Returns n (0: nothing to do).
 #[allow(clippy::too_many_arguments)]
 pub fn jac_dif_pair(
     m: &Model,
@@ -136,19 +154,17 @@ pub fn jac_dif_pair(
     jac1: &mut [f64],
     jac2: &mut [f64],
     jacdif: &mut [f64],
+    rot: bool,
 ) -> usize {
     let nv = m.raw.nv as usize;
     if nv == 0 {
         return 0;
     }
     let simple = m.body_simple()[b1] != 0 && m.body_simple()[b2] != 0;
-    if !is_sparse(m) {
-        jac(m, cdof, subtree_com, pos1, b1, Some(&mut *jac1), None);
-        jac(m, cdof, subtree_com, pos2, b2, Some(&mut *jac2), None);
-        sub(&mut jacdif[..3 * nv], &jac2[..3 * nv], &jac1[..3 * nv]);
-        return nv;
-    }
-    let n = if simple {
+    let sparse = is_sparse(m);
+    let n = if !sparse {
+        nv
+    } else if simple {
         merge_chain_simple(m, chain, b1, b2)
     } else {
         merge_chain(m, chain, b1, b2)
@@ -156,20 +172,86 @@ pub fn jac_dif_pair(
     if n == 0 {
         return 0;
     }
-    if simple {
+    let (j1p, j1r) = jac1.split_at_mut(3 * nv);
+    let (j2p, j2r) = jac2.split_at_mut(3 * nv);
+    let (jdp, jdr) = jacdif.split_at_mut(3 * nv);
+    fn pick(r: &mut [f64], rot: bool) -> Option<&mut [f64]> {
+        rot.then_some(r)
+    }
+    if sparse && simple {
         let (n1, n2) = (m.body_dofnum()[b1] as usize, m.body_dofnum()[b2] as usize);
         let s1 = if b1 < b2 { 0 } else { n2 };
         let s2 = if b2 < b1 { 0 } else { n1 };
-        if n1 > 0 {
-            jac_sparse_simple(m, cdof, subtree_com, jacdif, pos1, b1, false, n, s1);
-        }
-        if n2 > 0 {
-            jac_sparse_simple(m, cdof, subtree_com, jacdif, pos2, b2, true, n, s2);
-        }
+        jac_sparse_simple(
+            m,
+            cdof,
+            subtree_com,
+            jdp,
+            pick(&mut *jdr, rot),
+            pos1,
+            b1,
+            false,
+            n,
+            s1,
+        );
+        jac_sparse_simple(
+            m,
+            cdof,
+            subtree_com,
+            jdp,
+            pick(&mut *jdr, rot),
+            pos2,
+            b2,
+            true,
+            n,
+            s2,
+        );
+        return n;
+    }
+    if sparse {
+        jac_sparse(
+            m,
+            cdof,
+            subtree_com,
+            j1p,
+            pick(j1r, rot),
+            pos1,
+            b1,
+            &chain[..n],
+        );
+        jac_sparse(
+            m,
+            cdof,
+            subtree_com,
+            j2p,
+            pick(j2r, rot),
+            pos2,
+            b2,
+            &chain[..n],
+        );
     } else {
-        jac_sparse(m, cdof, subtree_com, jac1, pos1, b1, &chain[..n]);
-        jac_sparse(m, cdof, subtree_com, jac2, pos2, b2, &chain[..n]);
-        sub(&mut jacdif[..3 * n], &jac2[..3 * n], &jac1[..3 * n]);
+        jac(
+            m,
+            cdof,
+            subtree_com,
+            pos1,
+            b1,
+            Some(&mut *j1p),
+            pick(j1r, rot),
+        );
+        jac(
+            m,
+            cdof,
+            subtree_com,
+            pos2,
+            b2,
+            Some(&mut *j2p),
+            pick(j2r, rot),
+        );
+    }
+    sub(&mut jdp[..3 * n], &j2p[..3 * n], &j1p[..3 * n]);
+    if rot {
+        sub(&mut jdr[..3 * n], &j2r[..3 * n], &j1r[..3 * n]);
     }
     n
 }

@@ -200,6 +200,7 @@ pub fn tendon(m: &Model, d: &mut Data) -> Result<(), EngineError> {
                             jac1,
                             jac2,
                             jacdif,
+                            false,
                         );
                         if nc == 0 {
                             continue;
