@@ -22,11 +22,32 @@ mod tables {
     pub const DATA_VECTOR: &[&str] = mjdata_vector!(rows);
 }
 
+/// qhull 2020.2 (vendor/qhull) and the hull shim the mesh compiler calls.
+fn qhull() {
+    let dir = Path::new("vendor/qhull/src/libqhull_r");
+    println!("cargo:rerun-if-changed=vendor/qhull");
+    println!("cargo:rerun-if-changed=src/compiler/hull.c");
+    let mut files: Vec<PathBuf> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "c"))
+        .collect();
+    files.sort();
+    cc::Build::new()
+        .files(files)
+        .file("src/compiler/hull.c")
+        .include("vendor/qhull/src")
+        .include(dir)
+        .warnings(false)
+        .compile("rujoco_qhull");
+}
+
 fn main() {
     println!("cargo:rerun-if-changed=src/abi");
     println!("cargo:rerun-if-changed=src/capi");
     println!("cargo:rerun-if-changed=build.rs");
     println!("cargo:rustc-cdylib-link-arg=-Wl,-soname,libmujoco.so.2.2.2");
+    qhull();
 
     let root = PathBuf::from(std::env::var("CARGO_MANIFEST_DIR").unwrap());
     let inc = root.join("include/mujoco");

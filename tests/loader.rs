@@ -235,6 +235,160 @@ fn mutated_models_get_the_reference_verdict() {
     assert!(wrong.is_empty(), "{msg}");
 }
 
+/// A mesh file mutated: flipped bytes, truncation, or a 4-byte slot (sizes, coordinates, face
+/// indices) set to a hostile value; text lines (OBJ) dropped, repeated or given a hostile number.
+fn mutate_mesh(bytes: &[u8], rng: &mut Rng) -> Vec<u8> {
+    let mut b = bytes.to_vec();
+    if b.is_empty() {
+        return b;
+    }
+    match rng.below(5) {
+        0 => {
+            let at = rng.below(b.len());
+            b[at] ^= 1 + rng.below(255) as u8;
+        }
+        1 => b.truncate(rng.below(b.len())),
+        2 if b.len() >= 4 => {
+            let slots: [[u8; 4]; 8] = [
+                f32::NAN.to_le_bytes(),
+                f32::INFINITY.to_le_bytes(),
+                1e30f32.to_le_bytes(),
+                (-1i32).to_le_bytes(),
+                0i32.to_le_bytes(),
+                i32::MAX.to_le_bytes(),
+                7i32.to_le_bytes(),
+                300000i32.to_le_bytes(),
+            ];
+            let at = 4 * rng.below(b.len() / 4);
+            b[at..at + 4].copy_from_slice(&slots[rng.below(slots.len())]);
+        }
+        _ => {
+            let text = String::from_utf8_lossy(&b).into_owned();
+            let mut lines: Vec<String> = text.lines().map(str::to_string).collect();
+            let i = rng.below(lines.len());
+            match rng.below(3) {
+                0 => {
+                    lines.remove(i);
+                }
+                1 => lines.insert(i, lines[i].clone()),
+                _ => {
+                    let words: Vec<&str> = lines[i].split(' ').collect();
+                    let w = rng.below(words.len());
+                    let value = ["nan", "-1", "0", "1e40", "2/0", "-99", "x", ""][rng.below(8)];
+                    lines[i] = words
+                        .iter()
+                        .enumerate()
+                        .map(|(k, x)| if k == w { value } else { x })
+                        .collect::<Vec<_>>()
+                        .join(" ");
+                }
+            }
+            b = lines.join("\n").into_bytes();
+        }
+    }
+    b
+}
+
+/// Mesh file names (STL, OBJ, MSH) in a model's `file` attributes, resolved with its meshdir.
+fn mesh_files(xml: &str, dir: &Path) -> Vec<(String, std::path::PathBuf)> {
+    let attr = |name: &str| {
+        xml.match_indices(&format!(" {name}=\""))
+            .filter_map(|(i, m)| {
+                let v = &xml[i + m.len()..];
+                v.find('"').map(|e| v[..e].to_string())
+            })
+            .collect::<Vec<_>>()
+    };
+    let meshdir = attr("meshdir").into_iter().next().unwrap_or_default();
+    attr("file")
+        .into_iter()
+        .filter(|f| {
+            let l = f.to_ascii_lowercase();
+            l.ends_with(".stl") || l.ends_with(".obj") || l.ends_with(".msh")
+        })
+        .map(|f| {
+            let path = dir.join(&meshdir).join(&f);
+            (f, path)
+        })
+        .filter(|(_, p)| p.is_file())
+        .collect()
+}
+
+#[test]
+fn mutated_mesh_files_get_the_reference_verdict() {
+    let src = [root().join("capi-tests/loader.c")];
+    let reference = compile_c(&src, "loader-mesh", Lib::Ref);
+    let ours = compile_c(&src, "loader-mesh", Lib::Ours);
+    let seeds: Vec<(String, Vec<(String, std::path::PathBuf)>)> = seeds(&reference, &ours)
+        .into_iter()
+        .filter_map(|f| {
+            let xml = std::fs::read_to_string(&f).ok()?;
+            let meshes = mesh_files(&xml, Path::new(&f).parent()?);
+            (!meshes.is_empty()).then_some((f, meshes))
+        })
+        .collect();
+    assert!(!seeds.is_empty(), "no seed model with mesh files");
+    let count = 400;
+    let base = work_dir("mesh-mutants");
+    let mut rng = Rng(222);
+    let mut files = Vec::new();
+    for i in 0..count {
+        let (seed, meshes) = &seeds[rng.below(seeds.len())];
+        let seed = Path::new(seed);
+        let (name, path) = &meshes[rng.below(meshes.len())];
+        let dir = base.join(i.to_string());
+        mirror(seed, &dir);
+        let ext = &name[name.len() - 3..];
+        let mutant = dir.join(format!("mutant-mesh.{ext}"));
+        std::fs::write(
+            &mutant,
+            mutate_mesh(&std::fs::read(path).unwrap(), &mut rng),
+        )
+        .unwrap();
+        let xml = std::fs::read_to_string(seed).unwrap().replace(
+            &format!("file=\"{name}\""),
+            &format!("file=\"{}\"", mutant.display()),
+        );
+        let file = dir.join(format!(
+            "mutant-{}",
+            seed.file_name().unwrap().to_string_lossy()
+        ));
+        std::fs::write(&file, xml).unwrap();
+        files.push(file.to_string_lossy().into_owned());
+    }
+    let (r, o) = (verdicts(&reference, &files), verdicts(&ours, &files));
+    let (mut same, mut same_msg, mut loads, mut ref_bad) = (0, 0, 0, 0);
+    let mut wrong = Vec::new();
+    for (f, (r, o)) in files.iter().zip(r.iter().zip(&o)) {
+        let bad = |what: &str| format!("{what}: {f}\n    reference: {r}\n    ours:      {o}");
+        if o.starts_with("crash") || o == "hang" {
+            wrong.push(bad("crash or hang"));
+        } else if r.starts_with("crash") || r == "hang" {
+            ref_bad += 1;
+        } else if r.starts_with("load") == o.starts_with("load") {
+            same += 1;
+            loads += r.starts_with("load") as usize;
+            same_msg += (r == o) as usize;
+        } else {
+            wrong.push(bad("different verdict"));
+        }
+    }
+    let msg = format!(
+        "mesh file mutants: {count} mutated STL/OBJ/MSH files of {} seed models; same verdict \
+         {same} ({loads} load), identical verdict line {same_msg}; reference crashed or hung \
+         {ref_bad}; wrong {}\n{}",
+        seeds.len(),
+        wrong.len(),
+        wrong
+            .iter()
+            .take(20)
+            .map(|w| format!("  {w}\n"))
+            .collect::<String>()
+    );
+    report("mesh-mutants", &msg);
+    assert!(wrong.is_empty(), "{msg}");
+}
+
 #[test]
 fn loading_speed() {
     let src = [root().join("capi-tests/loader.c")];

@@ -190,6 +190,16 @@ pub fn load_files(
     load: &mut dyn FnMut(&str) -> Option<Vec<u8>>,
 ) {
     let c = &spec.compiler;
+    for m in spec.meshes.iter_mut().filter(|m| !m.file.is_empty()) {
+        m.short_file = if c.strippath {
+            m.file.rsplit(['/', '\\']).next().unwrap_or("").to_string()
+        } else {
+            m.file.clone()
+        };
+        let name = full_name(model_dir, &c.meshdir, &m.file, c.strippath);
+        m.bytes = load(&name);
+        m.file = name;
+    }
     for hf in spec.hfields.iter_mut().filter(|h| !h.file.is_empty()) {
         let name = full_name(model_dir, &c.meshdir, &hf.file, c.strippath);
         hf.bytes = load(&name).filter(|b| !b.is_empty());

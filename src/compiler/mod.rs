@@ -4,7 +4,10 @@
 //! with the sizes it found; `set_const` runs the engine's qpos0-dependent constants.
 
 pub mod frame;
+mod hull;
 pub mod image;
+pub mod mesh;
+mod obj;
 pub mod objects;
 pub mod spec;
 #[cfg(test)]

@@ -11,6 +11,7 @@ pub const CAPSULE: i32 = 3;
 pub const ELLIPSOID: i32 = 4;
 pub const CYLINDER: i32 = 5;
 pub const BOX: i32 = 6;
+pub const MESH: i32 = 7;
 
 /// Number of size parameters per geom type.
 const GEOM_NSIZE: [usize; 8] = [3, 0, 1, 2, 3, 2, 3, 0];
@@ -156,6 +157,8 @@ pub struct GeomOut {
     pub inertia: [f64; 3],
     /// geom_fluid: switch, 5 coefficients, virtual mass (3), virtual inertia (3)
     pub fluid: [f64; 12],
+    /// a mesh geom keeps its mesh (geom_dataid); a primitive fitted to a mesh does not
+    pub mesh_kept: bool,
 }
 
 /// Added-mass coefficient of an ellipsoid with semi-axes (dx, dy, dz) along x, by 15-point
@@ -309,41 +312,61 @@ pub fn rbound(kind: i32, s: &[f64; 3]) -> f64 {
         CAPSULE => s[0] + s[1],
         CYLINDER => (s[0] * s[0] + s[1] * s[1]).sqrt(),
         ELLIPSOID => s[0].max(s[1]).max(s[2]),
-        BOX => (s[0] * s[0] + s[1] * s[1] + s[2] * s[2]).sqrt(),
+        BOX | MESH => (s[0] * s[0] + s[1] * s[1] + s[2] * s[2]).sqrt(),
         _ => 0.0,
     }
 }
 
-/// Compiles a geom; `hfield` is the size of its height field, if it names one.
+/// The assets a geom names, and the compiler settings for meshes.
+pub struct GeomAssets<'a> {
+    /// size of the named height field
+    pub hfield: Option<[f64; 4]>,
+    /// the named mesh, compiled
+    pub mesh: Option<&'a super::mesh::Mesh>,
+    pub fitaabb: bool,
+    pub exactmeshinertia: bool,
+}
+
+/// A geom compilation error: about the geom itself, or about the mesh it uses.
+pub enum GeomError {
+    Geom(String),
+    Mesh(String),
+}
+
+impl From<String> for GeomError {
+    fn from(m: String) -> Self {
+        GeomError::Geom(m)
+    }
+}
+
+/// Compiles a geom; `mesh_ok` tells whether a mesh geom keeps its mesh (false when fitted).
 pub fn compile_geom(
     g: &Geom,
     id: usize,
     static_body: bool,
     infer: bool,
-    hfield: Option<[f64; 4]>,
+    a: &GeomAssets,
     s: &Settings,
-) -> Result<GeomOut, String> {
+) -> Result<GeomOut, GeomError> {
     let name = g.name.as_str();
+    let hfield = a.hfield;
     if let Some(a) = g.unsupported {
-        return Err(format!(
-            "geom attribute '{a}' is not supported by this compiler yet"
-        ));
+        return Err(format!("geom attribute '{a}' is not supported by this compiler yet").into());
     }
     if ![1, 3, 4, 6].contains(&g.condim) {
-        return Err(format!("invalid condim in geom '{name}' (id = {id})"));
+        return Err(format!("invalid condim in geom '{name}' (id = {id})").into());
     }
-    if g.kind == 7 {
-        return Err("mesh geoms are not supported by this compiler yet".into());
+    if g.kind == MESH && a.mesh.is_none() {
+        return Err(format!("mesh geom '{name}' (id = {id}) must have valid meshid").into());
     }
     if (g.kind == 1) != hfield.is_some() {
-        return Err(format!(
-            "hfield geom '{name}' (id = {id}) must have valid hfieldid"
-        ));
+        return Err(format!("hfield geom '{name}' (id = {id}) must have valid hfieldid").into());
     }
     if (g.kind == PLANE || g.kind == 1) && !static_body {
         return Err(format!(
             "plane and hfield only allowed in static bodies: geom '{name}' (id = {id})"
-        ));
+        )
+        .into());
     }
     let mut quat = g.quat;
     normalize(&mut quat);
@@ -353,12 +376,11 @@ pub fn compile_geom(
         if ![CAPSULE, CYLINDER, ELLIPSOID, BOX].contains(&g.kind) {
             return Err(format!(
                 "fromto requires capsule, cylinder, box or ellipsoid in geom '{name}' (id = {id})"
-            ));
+            )
+            .into());
         }
         if pos.iter().any(|&p| p != 0.0) {
-            return Err(format!(
-                "both pos and fromto defined in geom '{name}' (id = {id})"
-            ));
+            return Err(format!("both pos and fromto defined in geom '{name}' (id = {id})").into());
         }
         quat = from_to(&g.fromto, g.kind, &mut size, &mut pos)
             .map_err(|_| format!("fromto points too close in geom '{name}' (id = {id})"))?;
@@ -366,29 +388,78 @@ pub fn compile_geom(
         alt_set(&g.alt, &mut quat, None, s)
             .map_err(|e| format!("alternative specification error '{e}' in geom {id}"))?;
     }
+    let kind_inertia = g.shellinertia as usize;
+    let mut mesh = a.mesh;
+    if let Some(m) = mesh {
+        if defined(g.fromto[0]) {
+            return Err(
+                format!("fromto cannot be used with mesh geom '{name}' (id = {id})").into(),
+            );
+        }
+        let meshpos = if g.kind != MESH {
+            let p = super::mesh::fit(m, g.kind, kind_inertia, a.fitaabb, g.fitscale, &mut size)
+                .map_err(GeomError::Mesh)?;
+            mesh = None;
+            p
+        } else {
+            m.pos[kind_inertia]
+        };
+        let add = mat_vec(&quat2mat(&quat), &meshpos);
+        for k in 0..3 {
+            pos[k] += add[k];
+        }
+        quat = mulquat_unit(&quat, &m.quat[kind_inertia]);
+    }
     check_size(&size, g.kind, "geom", name, id)?;
     if let Some(hf) = hfield {
         size = [hf[0], hf[1], 0.5 * (hf[2] + hf[3])];
+    } else if let Some(m) = mesh {
+        size = m.aabb;
     }
     let (mut mass, mut inertia) = (0.0, [0.0; 3]);
     if infer {
+        let vol = || -> Result<f64, GeomError> {
+            match mesh {
+                Some(m) if a.exactmeshinertia => m.volume(kind_inertia).map_err(GeomError::Mesh),
+                Some(m) => Ok(m.boxsz[0][0] * m.boxsz[0][1] * m.boxsz[0][2] * 8.0),
+                None => Ok(volume(g.kind, &size)),
+            }
+        };
+        let inertia_of = |mass: f64| -> Result<[f64; 3], GeomError> {
+            match mesh {
+                Some(m) => {
+                    let b = m.inertia_box(kind_inertia).map_err(GeomError::Mesh)?;
+                    Ok([
+                        mass * (b[1] * b[1] + b[2] * b[2]) / 3.0,
+                        mass * (b[0] * b[0] + b[2] * b[2]) / 3.0,
+                        mass * (b[0] * b[0] + b[1] * b[1]) / 3.0,
+                    ])
+                }
+                None if g.shellinertia => Err(format!(
+                    "typeinertia currently only available for meshes'{name}' (id = {id})"
+                )
+                .into()),
+                None => Ok(geom_inertia(g.kind, mass, &size)),
+            }
+        };
         let mut density = g.density;
         if defined(g.mass) {
             if g.mass == 0.0 {
                 density = 0.0;
-            } else if volume(g.kind, &size) > MINVAL {
+            } else if vol()? > MINVAL {
                 mass = g.mass;
-                density = g.mass / volume(g.kind, &size);
-                inertia = geom_inertia(g.kind, mass, &size);
+                density = g.mass / vol()?;
+                inertia = inertia_of(mass)?;
             }
         } else {
-            mass = density * volume(g.kind, &size);
-            inertia = geom_inertia(g.kind, mass, &size);
+            mass = density * vol()?;
+            inertia = inertia_of(mass)?;
         }
         if mass < 0.0 || inertia.iter().any(|&x| x < 0.0) || density < 0.0 {
             return Err(format!(
                 "mass, inertia or density are negative in geom '{name}' (id = {id})"
-            ));
+            )
+            .into());
         }
     }
     let fluid = if g.fluid_switch {
@@ -403,6 +474,7 @@ pub fn compile_geom(
         mass,
         inertia,
         fluid,
+        mesh_kept: mesh.is_some(),
     })
 }
 

@@ -131,10 +131,14 @@ pub struct Geom {
     pub alt: Alt,
     pub fluid_switch: bool,
     pub fluid_coefs: [f64; 5],
-    /// Attributes the compiler does not handle yet (material, mesh, hfield, shellinertia).
+    /// Attributes the compiler does not handle yet.
     pub unsupported: Option<&'static str>,
     pub material: String,
     pub hfield: String,
+    pub mesh: String,
+    pub fitscale: f64,
+    /// inertia from the mesh surface (shellinertia) instead of its volume
+    pub shellinertia: bool,
     pub user: Vec<f64>,
 }
 
@@ -168,6 +172,9 @@ impl Default for Geom {
             unsupported: None,
             material: String::new(),
             hfield: String::new(),
+            mesh: String::new(),
+            fitscale: 1.0,
+            shellinertia: false,
             user: Vec::new(),
         }
     }
@@ -511,6 +518,49 @@ pub struct HField {
     pub data: Vec<f32>,
 }
 
+/// `<mesh>`: a file or inline data (empty vectors: not given).
+#[derive(Debug, Clone)]
+pub struct Mesh {
+    pub name: String,
+    pub line: Line,
+    /// the file as written (after strippath), and its full name once the loader resolved it
+    pub short_file: String,
+    pub file: String,
+    /// contents of `file` (None when it could not be read), set before compiling
+    pub bytes: Option<Vec<u8>>,
+    pub scale: [f64; 3],
+    pub refpos: [f64; 3],
+    pub refquat: [f64; 4],
+    pub smoothnormal: bool,
+    pub vertex: Vec<f32>,
+    pub normal: Vec<f32>,
+    pub texcoord: Vec<f32>,
+    pub face: Vec<i32>,
+    /// geom density of the mesh's default class: 2.2.2 weighs the inertia integrals by it
+    pub density: f64,
+}
+
+impl Default for Mesh {
+    fn default() -> Self {
+        Mesh {
+            name: String::new(),
+            line: -1,
+            short_file: String::new(),
+            file: String::new(),
+            bytes: None,
+            scale: [1.0; 3],
+            refpos: [0.0; 3],
+            refquat: [1.0, 0.0, 0.0, 0.0],
+            smoothnormal: false,
+            vertex: Vec::new(),
+            normal: Vec::new(),
+            texcoord: Vec::new(),
+            face: Vec::new(),
+            density: 1000.0,
+        }
+    }
+}
+
 /// `<texture>`; `kind` 0 2d, 1 cube, 2 skybox; `builtin` none, gradient, checker, flat;
 /// `mark` none, edge, cross, random.
 #[derive(Debug, Clone)]
@@ -620,6 +670,7 @@ pub struct DefaultClass {
     pub equality: Equality,
     pub tendon: Tendon,
     pub actuator: Actuator,
+    pub mesh: Mesh,
 }
 
 #[derive(Debug, Clone)]
@@ -715,6 +766,10 @@ pub struct CompilerOpts {
     pub meshdir: String,
     pub texturedir: String,
     pub strippath: bool,
+    pub convexhull: bool,
+    pub exactmeshinertia: bool,
+    pub fitaabb: bool,
+    pub fusestatic: bool,
 }
 
 impl Default for CompilerOpts {
@@ -723,6 +778,10 @@ impl Default for CompilerOpts {
             meshdir: String::new(),
             texturedir: String::new(),
             strippath: false,
+            convexhull: true,
+            exactmeshinertia: false,
+            fitaabb: false,
+            fusestatic: false,
             autolimits: false,
             boundmass: 0.0,
             boundinertia: 0.0,
@@ -763,6 +822,7 @@ pub struct ModelSpec {
     pub world: Body,
     pub actuators: Vec<Actuator>,
     pub hfields: Vec<HField>,
+    pub meshes: Vec<Mesh>,
     pub textures: Vec<Texture>,
     pub materials: Vec<Material>,
     pub pairs: Vec<Pair>,
@@ -802,6 +862,7 @@ impl Default for ModelSpec {
             world,
             actuators: Vec::new(),
             hfields: Vec::new(),
+            meshes: Vec::new(),
             textures: Vec::new(),
             materials: Vec::new(),
             pairs: Vec::new(),

@@ -7,6 +7,8 @@ use super::CError;
 use crate::abi::view::ModelMut;
 use crate::abi::{mjModel, mjOption, mjVisual};
 
+mod fuse;
+
 struct FBody {
     spec: Body,
     parent: usize,
@@ -76,6 +78,8 @@ pub struct Compiled {
     texture_names: Vec<String>,
     hfields: Vec<HField>,
     geom_hfield: Vec<Option<usize>>,
+    meshes: Vec<super::mesh::Mesh>,
+    geom_mesh: Vec<Option<usize>>,
     materials: Vec<Material>,
     mat_texid: Vec<i32>,
     geom_matid: Vec<i32>,
@@ -237,6 +241,10 @@ pub fn compile(mut spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> 
         "light",
     )?;
     check_names(
+        spec.meshes.iter().map(|m| (m.name.as_str(), m.line)),
+        "mesh",
+    )?;
+    check_names(
         spec.textures.iter().map(|t| (t.name.as_str(), t.line)),
         "texture",
     )?;
@@ -285,14 +293,42 @@ pub fn compile(mut spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> 
     ];
 
     // asset names, then references to assets
-    for (id, t) in spec.textures.iter().enumerate() {
-        if t.name.is_empty() && t.kind != 2 && !t.files {
-            return Err(CError::at(
-                "empty name in texture".into(),
-                &t.name,
-                id,
-                t.line,
-            ));
+    // unnamed assets take the name of their file, without directory and extension
+    let file_name = |file: &str| {
+        let base = file.rsplit(['/', '\\']).next().unwrap_or("");
+        match base.rfind('.') {
+            Some(dot) => base[..dot].to_string(),
+            None => base.to_string(),
+        }
+    };
+    for (id, m) in spec.meshes.iter_mut().enumerate() {
+        if m.name.is_empty() {
+            m.name = file_name(&m.file);
+            if m.name.is_empty() {
+                return Err(CError::at("empty name in mesh".into(), &m.name, id, m.line));
+            }
+        }
+    }
+    for (id, hf) in spec.hfields.iter_mut().enumerate() {
+        if hf.name.is_empty() {
+            hf.name = file_name(&hf.file);
+            if hf.name.is_empty() {
+                let msg = "empty name in height field".into();
+                return Err(CError::at(msg, &hf.name, id, hf.line));
+            }
+        }
+    }
+    for (id, t) in spec.textures.iter_mut().enumerate() {
+        if t.name.is_empty() {
+            t.name = file_name(&t.file_names[0]);
+            if t.name.is_empty() && t.kind != 2 {
+                return Err(CError::at(
+                    "empty name in texture".into(),
+                    &t.name,
+                    id,
+                    t.line,
+                ));
+            }
         }
     }
     for (id, m) in spec.materials.iter().enumerate() {
@@ -305,47 +341,30 @@ pub fn compile(mut spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> 
             ));
         }
     }
-    for (id, hf) in spec.hfields.iter().enumerate() {
-        if hf.name.is_empty() {
-            return Err(CError::at(
-                "empty name in height field".into(),
-                &hf.name,
-                id,
-                hf.line,
-            ));
-        }
-    }
-    let mut geom_hfield: Vec<Option<usize>> = vec![None; gspecs.len()];
-    for (i, g) in gspecs.iter().enumerate() {
-        if !g.hfield.is_empty() {
-            let h = spec
-                .hfields
-                .iter()
-                .position(|h| h.name == g.hfield)
-                .ok_or_else(|| {
-                    CError::at(
-                        format!("hfield '{}' not found in geom {i}", g.hfield),
-                        &g.name,
-                        i,
-                        g.line,
-                    )
-                })?;
-            geom_hfield[i] = Some(h);
-        }
-    }
     let find_mat = |n: &str| spec.materials.iter().position(|m| m.name == n);
+    let mut geom_hfield: Vec<Option<usize>> = vec![None; gspecs.len()];
+    let mut geom_mesh: Vec<Option<usize>> = vec![None; gspecs.len()];
     let mut geom_matid = vec![-1; gspecs.len()];
     for (i, g) in gspecs.iter().enumerate() {
+        let missing = |what: &str, n: &str| {
+            CError::at(
+                format!("{what} '{n}' not found in geom {i}"),
+                &g.name,
+                i,
+                g.line,
+            )
+        };
         if !g.material.is_empty() {
-            let m = find_mat(&g.material).ok_or_else(|| {
-                CError::at(
-                    format!("material '{}' not found in geom {i}", g.material),
-                    &g.name,
-                    i,
-                    g.line,
-                )
-            })?;
+            let m = find_mat(&g.material).ok_or_else(|| missing("material", &g.material))?;
             geom_matid[i] = m as i32;
+        }
+        if !g.mesh.is_empty() {
+            let m = spec.meshes.iter().position(|m| m.name == g.mesh);
+            geom_mesh[i] = Some(m.ok_or_else(|| missing("mesh", &g.mesh))?);
+        }
+        if !g.hfield.is_empty() {
+            let h = spec.hfields.iter().position(|h| h.name == g.hfield);
+            geom_hfield[i] = Some(h.ok_or_else(|| missing("hfield", &g.hfield))?);
         }
     }
     let mut site_matid = vec![-1; sspecs.len()];
@@ -393,6 +412,27 @@ pub fn compile(mut spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> 
                 })?;
             mat_texid[i] = t as i32;
         }
+    }
+
+    // meshes (a colliding mesh geom needs the convex hull)
+    let mut needhull = vec![false; spec.meshes.len()];
+    for (g, m) in gspecs.iter().zip(&geom_mesh) {
+        if let Some(m) = m {
+            if g.kind == MESH && (g.contype != 0 || g.conaffinity != 0) {
+                needhull[*m] = true;
+            }
+        }
+    }
+    let mesh_opts = super::mesh::MeshOpts {
+        convexhull: opts.convexhull,
+        exactmeshinertia: opts.exactmeshinertia,
+    };
+    let mut meshes = Vec::with_capacity(spec.meshes.len());
+    for (id, m) in spec.meshes.iter().enumerate() {
+        meshes.push(
+            super::mesh::compile(m, &mesh_opts, needhull[id])
+                .map_err(|e| CError::at(e, &m.name, id, m.line))?,
+        );
     }
 
     // bodies, with their geoms, joints and sites
@@ -447,9 +487,21 @@ pub fn compile(mut spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> 
                 );
                 return Err(CError::at(m, &g.name, gid, g.line));
             }
-            let hf = geom_hfield[gid].map(|h| spec.hfields[h].size);
-            let out = compile_geom(g, gid, b.weldid == 0, infer, hf, &settings)
-                .map_err(|m| CError::at(m, &g.name, gid, g.line))?;
+            let assets = GeomAssets {
+                hfield: geom_hfield[gid].map(|h| spec.hfields[h].size),
+                mesh: geom_mesh[gid].map(|m| &meshes[m]),
+                fitaabb: opts.fitaabb,
+                exactmeshinertia: opts.exactmeshinertia,
+            };
+            let out = compile_geom(g, gid, b.weldid == 0, infer, &assets, &settings).map_err(
+                |e| match e {
+                    GeomError::Geom(m) => CError::at(m, &g.name, gid, g.line),
+                    GeomError::Mesh(m) => {
+                        let mid = geom_mesh[gid].unwrap_or(0);
+                        CError::at(m, &meshes[mid].name, mid, meshes[mid].line)
+                    }
+                },
+            )?;
             geoms[gid] = Some(FGeom {
                 spec: g.clone(),
                 body: i,
@@ -609,8 +661,8 @@ pub fn compile(mut spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> 
             }
         }
     }
-    let geoms: Vec<FGeom> = geoms.into_iter().flatten().collect();
-    let sites: Vec<FSite> = sites.into_iter().flatten().collect();
+    let mut geoms: Vec<FGeom> = geoms.into_iter().flatten().collect();
+    let mut sites: Vec<FSite> = sites.into_iter().flatten().collect();
 
     // height fields: elevation is all zero without a file
     for (id, hf) in spec.hfields.iter_mut().enumerate() {
@@ -1139,6 +1191,20 @@ pub fn compile(mut spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> 
         tuple_ids.push(ids);
     }
 
+    // static bodies into their parents, when no other object refers to body ids
+    let refs = !pairs.is_empty()
+        || !excludes.is_empty()
+        || !equalities.is_empty()
+        || !tendons.is_empty()
+        || !actuators.is_empty()
+        || !csensors.is_empty()
+        || !custom.tuples.is_empty()
+        || !cameras.is_empty()
+        || !lights.is_empty();
+    if opts.fusestatic && !refs {
+        fuse::fuse_static(&mut bodies, &mut joints, &mut geoms, &mut sites, &settings)?;
+    }
+
     // sizes
     h.nbody = bodies.len() as i32;
     h.njnt = joints.len() as i32;
@@ -1171,6 +1237,14 @@ pub fn compile(mut spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> 
     nnames += sites.iter().map(|s| s.spec.name.len() + 1).sum::<usize>();
     nnames += cameras.iter().map(|c| c.0.name.len() + 1).sum::<usize>();
     nnames += lights.iter().map(|l| l.0.name.len() + 1).sum::<usize>();
+    nnames += meshes.iter().map(|m| m.name.len() + 1).sum::<usize>();
+    h.nmesh = meshes.len() as i32;
+    for m in &meshes {
+        h.nmeshvert += (m.vert.len() / 3) as i32;
+        h.nmeshface += (m.face.len() / 3) as i32;
+        h.nmeshtexvert += (m.texcoord.len() / 2) as i32;
+        h.nmeshgraph += m.graph.len() as i32;
+    }
     nnames += hfields.iter().map(|h| h.name.len() + 1).sum::<usize>();
     h.nhfield = hfields.len() as i32;
     h.nhfielddata = hfields.iter().map(|h| h.nrow * h.ncol).sum();
@@ -1369,6 +1443,8 @@ pub fn compile(mut spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> 
         texture_names: spec.textures.iter().map(|t| t.name.clone()).collect(),
         hfields,
         geom_hfield,
+        meshes,
+        geom_mesh,
         materials,
         mat_texid,
         geom_matid,
@@ -1909,6 +1985,9 @@ impl Compiled {
         for (i, l) in self.lights.iter().enumerate() {
             name(&mut m.name_lightadr[i], &l.0.name, m.names);
         }
+        for (i, mesh) in self.meshes.iter().enumerate() {
+            name(&mut m.name_meshadr[i], &mesh.name, m.names);
+        }
         for (i, hf) in self.hfields.iter().enumerate() {
             name(&mut m.name_hfieldadr[i], &hf.name, m.names);
         }
@@ -2186,6 +2265,40 @@ impl Compiled {
         for (g, hf) in self.geom_hfield.iter().enumerate() {
             if let Some(h) = hf {
                 m.geom_dataid[g] = *h as i32;
+            }
+        }
+        let (mut vadr, mut tadr, mut fadr, mut gadr) = (0usize, 0usize, 0usize, 0usize);
+        for (i, mesh) in self.meshes.iter().enumerate() {
+            let (nv, nf) = (mesh.vert.len() / 3, mesh.face.len() / 3);
+            m.mesh_vertadr[i] = vadr as i32;
+            m.mesh_vertnum[i] = nv as i32;
+            m.mesh_texcoordadr[i] = if mesh.texcoord.is_empty() {
+                -1
+            } else {
+                tadr as i32
+            };
+            m.mesh_faceadr[i] = fadr as i32;
+            m.mesh_facenum[i] = nf as i32;
+            m.mesh_graphadr[i] = if mesh.graph.is_empty() {
+                -1
+            } else {
+                gadr as i32
+            };
+            m.mesh_vert[3 * vadr..3 * (vadr + nv)].copy_from_slice(&mesh.vert);
+            m.mesh_normal[3 * vadr..3 * (vadr + nv)].copy_from_slice(&mesh.normal[..3 * nv]);
+            m.mesh_face[3 * fadr..3 * (fadr + nf)].copy_from_slice(&mesh.face);
+            let nt = mesh.texcoord.len();
+            m.mesh_texcoord[2 * tadr..2 * tadr + nt].copy_from_slice(&mesh.texcoord);
+            let ng = mesh.graph.len();
+            m.mesh_graph[gadr..gadr + ng].copy_from_slice(&mesh.graph);
+            vadr += nv;
+            fadr += nf;
+            tadr += nt / 2;
+            gadr += ng;
+        }
+        for (g, mesh) in self.geom_mesh.iter().enumerate() {
+            if let (Some(id), true) = (mesh, self.geoms[g].out.mesh_kept) {
+                m.geom_dataid[g] = *id as i32;
             }
         }
         let mut adr = 0;

@@ -242,13 +242,11 @@ fn one_geom(el: &Element, g: &mut Geom) -> R<()> {
     num(el, "gap", &mut g.gap)?;
     text(el, "material", &mut g.material);
     text(el, "hfield", &mut g.hfield);
-    for a in ["mesh", "shellinertia"] {
-        if el.attr(a).is_some() {
-            g.unsupported = Some(a);
-        }
+    text(el, "mesh", &mut g.mesh);
+    num(el, "fitscale", &mut g.fitscale)?;
+    if let Some(b) = boolean(el, "shellinertia")? {
+        g.shellinertia = b;
     }
-    let mut fitscale = 0.0;
-    num(el, "fitscale", &mut fitscale)?;
     rgba(el, &mut g.rgba)?;
     if let Some(i) = keyword(el, "fluidshape", &["none", "ellipsoid"])? {
         g.fluid_switch = i == 1;
@@ -262,6 +260,72 @@ fn one_geom(el: &Element, g: &mut Geom) -> R<()> {
     nums(el, "quat", &mut g.quat)?;
     alternative(el, &mut g.alt)?;
     g.line = el.line;
+    Ok(())
+}
+
+/// Numbers of a text as `std::stringstream >> T` reads them: as many as parse, in order.
+fn stream_numbers<T: std::str::FromStr + Copy + Into<f64>>(text: &str, float: bool) -> Vec<T> {
+    let b = text.as_bytes();
+    let mut out = Vec::new();
+    let mut i = 0;
+    loop {
+        while i < b.len() && b[i].is_ascii_whitespace() {
+            i += 1;
+        }
+        let start = i;
+        if i < b.len() && matches!(b[i], b'+' | b'-') {
+            i += 1;
+        }
+        while i < b.len() && b[i].is_ascii_digit() {
+            i += 1;
+        }
+        if float {
+            if i < b.len() && b[i] == b'.' {
+                i += 1;
+                while i < b.len() && b[i].is_ascii_digit() {
+                    i += 1;
+                }
+            }
+            if i < b.len() && matches!(b[i], b'e' | b'E') {
+                i += 1;
+                if i < b.len() && matches!(b[i], b'+' | b'-') {
+                    i += 1;
+                }
+                while i < b.len() && b[i].is_ascii_digit() {
+                    i += 1;
+                }
+            }
+        }
+        match text[start..i].parse::<T>() {
+            Ok(v) if i > start && v.into().is_finite() => out.push(v),
+            _ => return out,
+        }
+    }
+}
+
+fn one_mesh(el: &Element, m: &mut Mesh) -> R<()> {
+    text(el, "name", &mut m.name);
+    text(el, "file", &mut m.file);
+    nums(el, "refpos", &mut m.refpos)?;
+    nums(el, "refquat", &mut m.refquat)?;
+    nums(el, "scale", &mut m.scale)?;
+    if let Some(b) = boolean(el, "smoothnormal")? {
+        m.smoothnormal = b;
+    }
+    let floats = |name: &str| el.attr(name).map(|t| stream_numbers::<f32>(t, true));
+    if let Some(v) = floats("vertex") {
+        m.vertex = v;
+    }
+    if let Some(v) = floats("normal") {
+        m.normal = v;
+    }
+    if let Some(v) = floats("texcoord") {
+        m.texcoord = v;
+    }
+    if let Some(t) = el.attr("face") {
+        m.face = stream_numbers::<i32>(t, false);
+    }
+    m.line = el.line;
     Ok(())
 }
 
@@ -863,6 +927,12 @@ fn read_assets(spec: &mut ModelSpec, el: &Element) -> R<()> {
                 }
                 spec.textures.push(t);
             }
+            "mesh" => {
+                let mut m = spec.defaults[def].mesh.clone();
+                m.density = spec.defaults[def].geom.density;
+                one_mesh(c, &mut m)?;
+                spec.meshes.push(m);
+            }
             "hfield" => {
                 let mut hf = HField {
                     line: c.line,
@@ -998,6 +1068,7 @@ fn read_default(spec: &mut ModelSpec, el: &Element, parent: Option<usize>) -> R<
             "material" => one_material(c, &mut d.material)?,
             "equality" => one_equality(c, &mut d.equality, true)?,
             "tendon" => one_tendon(c, &mut d.tendon)?,
+            "mesh" => one_mesh(c, &mut d.mesh)?,
             n if ACTUATORS.contains(&n) => one_actuator(c, &mut d.actuator)?,
             "default" => {}
             other => return Err(unsupported(c, other)),
@@ -1115,14 +1186,13 @@ fn read_compiler(spec: &mut ModelSpec, el: &Element) -> R<()> {
         "exactmeshinertia",
     ] {
         if let Some(b) = boolean(el, flag)? {
-            if flag == "strippath" {
-                c.strippath = b;
-            }
-            if flag == "fusestatic" && b {
-                return Err(xerr(
-                    el,
-                    "fusestatic is not supported by this MJCF reader yet",
-                ));
+            match flag {
+                "strippath" => c.strippath = b,
+                "convexhull" => c.convexhull = b,
+                "exactmeshinertia" => c.exactmeshinertia = b,
+                "fitaabb" => c.fitaabb = b,
+                "fusestatic" => c.fusestatic = b,
+                _ => {}
             }
         }
     }

@@ -124,12 +124,6 @@ struct Converter {
     materials: Vec<(String, [f32; 4])>,
     /// Mesh assets: name, file, scale.
     meshes: Vec<(String, String, [f64; 3])>,
-    /// Geoms of static links fused into the world.
-    fused_geoms: Vec<Element>,
-    /// No compiler option changes inertias (fusing into moving links needs that).
-    plain_inertia: bool,
-    /// Bodies created so far (2.2.2's body ids before fusion).
-    nbody: usize,
 }
 
 fn strip_path(f: &str) -> &str {
@@ -344,19 +338,6 @@ pub fn convert(robot: &Element) -> Result<Element, String> {
         discardvisual: boolean(user_compiler, "discardvisual", true),
         materials: Vec::new(),
         meshes: Vec::new(),
-        fused_geoms: Vec::new(),
-        nbody: 0,
-        plain_inertia: user_compiler.is_none_or(|c| {
-            c.attr("inertiafromgeom").is_none_or(|v| v != "true")
-                && [
-                    "balanceinertia",
-                    "boundmass",
-                    "boundinertia",
-                    "settotalmass",
-                ]
-                .iter()
-                .all(|k| c.attr(k).is_none())
-        }),
     };
     let fusestatic = boolean(user_compiler, "fusestatic", true);
     materials(robot, &mut conv.materials)?;
@@ -368,6 +349,8 @@ pub fn convert(robot: &Element) -> Result<Element, String> {
     let mut defaults = new_el("compiler", robot.line);
     defaults.attrs.push(("strippath".into(), "true".into()));
     defaults.attrs.push(("discardvisual".into(), "true".into()));
+    let fuse = if fusestatic { "true" } else { "false" };
+    defaults.attrs.push(("fusestatic".into(), fuse.into()));
     root.children.push(defaults);
     if let Some(c) = user_compiler {
         let mut c = c.clone();
@@ -426,13 +409,10 @@ pub fn convert(robot: &Element) -> Result<Element, String> {
                 names: &names,
                 parent_joint: &parent_joint,
                 children: &children,
-                fusestatic,
             };
-            tree.build(i, &mut conv, &mut world, Place::World)?;
+            tree.build(i, &mut conv, &mut world)?;
         }
     }
-    // geoms of fused links follow the world's own geoms
-    world.children.append(&mut conv.fused_geoms);
     if !conv.meshes.is_empty() {
         let mut asset = new_el("asset", robot.line);
         for (name, file, scale) in &conv.meshes {
@@ -448,311 +428,33 @@ pub fn convert(robot: &Element) -> Result<Element, String> {
     Ok(root)
 }
 
-/// Where a link's body goes: under a moving body, directly in the world, or in the world
-/// through fused static links whose accumulated frame is given.
-#[derive(Clone, Copy)]
-enum Place {
-    Moving,
-    World,
-    /// Through fused static links (into the world or not), with their accumulated frame.
-    Fused(bool, [f64; 3], [f64; 4]),
-}
-
-/// The mass checks 2.2.2's compiler makes on a body before it is fused.
-fn check_inertia(el: &Element, name: &str, id: usize) -> Result<(), String> {
-    let (_, _, _, t) = inertial_values(el);
-    let fail = |msg: &str| Err(format!("Error: {msg}\nObject name = {name}, id = {id}"));
-    if t[0] + t[1] < t[2] || t[0] + t[2] < t[1] || t[1] + t[2] < t[0] {
-        return fail("inertia must satisfy A + B >= C; use 'balanceinertia' to fix");
-    }
-    Ok(())
-}
-
-fn tmp_has_no_inertial(link: &Element) -> bool {
-    child(link, "inertial").is_none()
-}
-
-/// Compiled inertial values of an `<inertial>` element this converter wrote: mass, pos,
-/// normalized quat, diagonal inertia.
-fn inertial_values(el: &Element) -> (f64, [f64; 3], [f64; 4], [f64; 3]) {
-    let mass = parse_vec::<1>(el, "mass").map_or(0.0, |m| m[0]);
-    let pos = parse_vec::<3>(el, "pos").unwrap_or([0.0; 3]);
-    let mut quat = parse_vec::<4>(el, "quat").unwrap_or([1.0, 0.0, 0.0, 0.0]);
-    crate::compiler::frame::normalize(&mut quat);
-    let inertia = parse_vec::<3>(el, "diaginertia").unwrap_or([0.0; 3]);
-    // the compiler's lower bounds (boundmass, boundinertia: 0 here) come first
-    let bound = |x: f64| if x > 0.0 { x } else { 0.0 };
-    (bound(mass), pos, quat, inertia.map(bound))
-}
-
-/// Adds the mass of a fused static link (its `<inertial>` `child`, in the frame `fpos, fquat`
-/// of the parent body `body`) to the parent's inertial, as 2.2.2's static-body fusion does.
-fn add_mass(
-    body: &mut Element,
-    child_inertial: &Element,
-    fpos: &[f64; 3],
-    fquat: &[f64; 4],
-    plain: bool,
-    link: &Element,
-) -> Result<(), String> {
-    use crate::compiler::frame::{global_inertia, offcenter, MINVAL};
-    let (cmass, cpos, cquat, cinertia) = inertial_values(child_inertial);
-    if cmass < MINVAL {
-        return Ok(());
-    }
-    let Some(pi) = body.children.iter().position(|c| c.name == "inertial") else {
-        return Err(err(
-            link,
-            "fusing a static link into a link without inertial is not implemented",
-        ));
-    };
-    if !plain {
-        return Err(err(
-            link,
-            "fusing static links with inertia compiler options is not implemented",
-        ));
-    }
-    let (pmass, ppos, pquat, pinertia) = inertial_values(&body.children[pi]);
-    let (cpos, cquat) = accumulate(fpos, fquat, &cpos, &cquat);
-    let mass = [pmass, cmass];
-    let inertia = [pinertia, cinertia];
-    let ipos = [ppos, cpos];
-    let iquat = [pquat, cquat];
-    let mut total = 0.0;
-    let mut com = [0.0; 3];
-    for j in 0..2 {
-        total += mass[j];
-        for k in 0..3 {
-            com[k] += mass[j] * ipos[j][k];
-        }
-    }
-    let (mut q, mut diag) = ([1.0, 0.0, 0.0, 0.0], [0.0; 3]);
-    if total < MINVAL {
-        total = 0.0;
-        com = [0.0; 3];
-    } else {
-        for c in com.iter_mut() {
-            *c /= total;
-        }
-        let mut toti = [0.0; 6];
-        for j in 0..2 {
-            let d = [
-                ipos[j][0] - com[0],
-                ipos[j][1] - com[1],
-                ipos[j][2] - com[2],
-            ];
-            let a = global_inertia(&inertia[j], &iquat[j]);
-            let b = offcenter(mass[j], &d);
-            for k in 0..6 {
-                toti[k] += a[k] + b[k];
-            }
-        }
-        let alt = Alt {
-            fullinertia: toti,
-            ..Alt::default()
-        };
-        let s = Settings {
-            degree: false,
-            eulerseq: b"xyz",
-        };
-        alt_set(&alt, &mut q, Some(&mut diag), &s)
-            .map_err(|e| format!("Error: error '{e}' in fusing static body inertias\n"))?;
-    }
-    let el = &mut body.children[pi];
-    replace_attr(el, "pos", text(&com));
-    replace_attr(el, "quat", text(&prenormalized(&q)));
-    replace_attr(el, "mass", text(&[total]));
-    replace_attr(el, "diaginertia", text(&diag));
-    Ok(())
-}
-
-const MOVING: [&str; 5] = ["revolute", "continuous", "prismatic", "floating", "planar"];
-
-fn parse_vec<const N: usize>(el: &Element, key: &str) -> Option<[f64; N]> {
-    let v: Vec<f64> = el
-        .attr(key)?
-        .split_whitespace()
-        .filter_map(|x| x.parse().ok())
-        .collect();
-    v.try_into().ok()
-}
-
-fn replace_attr(el: &mut Element, key: &str, value: String) {
-    match el.attrs.iter_mut().find(|(k, _)| k == key) {
-        Some(a) => a.1 = value,
-        None => el.attrs.push((key.into(), value)),
-    }
-}
-
-/// Re-expresses the pose attributes of `el` (local to a fused link) in the fused frame, on the
-/// compiled (normalized) values as 2.2.2's static-body fusion does.
-fn change_frame(el: &mut Element, fpos: &[f64; 3], fquat: &[f64; 4]) {
-    let pos = parse_vec::<3>(el, "pos").unwrap_or([0.0; 3]);
-    let mut quat = parse_vec::<4>(el, "quat").unwrap_or([1.0, 0.0, 0.0, 0.0]);
-    crate::compiler::frame::normalize(&mut quat);
-    let (p, q) = accumulate(fpos, fquat, &pos, &quat);
-    replace_attr(el, "pos", text(&p));
-    replace_attr(el, "quat", text(&prenormalized(&q)));
-}
-
-/// A quaternion the compiler's normalization maps exactly to the unit quaternion `q` (the
-/// written value is normalized once more on loading; 2.2.2 keeps `q` as computed).
-fn prenormalized(q: &[f64; 4]) -> [f64; 4] {
-    let maps = |c: &[f64; 4]| {
-        let mut n = *c;
-        crate::compiler::frame::normalize(&mut n);
-        n == *q
-    };
-    if maps(q) {
-        return *q;
-    }
-    // scaled copies first (the norm of q is 1 only to rounding), then 1-ulp changes
-    for k in 1..=16 {
-        for sign in [1.0, -1.0] {
-            let t = 1.0 + sign * k as f64 * f64::EPSILON / 2.0;
-            let c = q.map(|x| x * t);
-            if maps(&c) {
-                return c;
-            }
-        }
-    }
-    let step = |x: f64, d: i32| match d {
-        1 => f64::from_bits(if x >= 0.0 {
-            x.to_bits() + 1
-        } else {
-            x.to_bits() - 1
-        }),
-        -1 if x != 0.0 => f64::from_bits(if x > 0.0 {
-            x.to_bits() - 1
-        } else {
-            x.to_bits() + 1
-        }),
-        _ => x,
-    };
-    for code in 0..81 {
-        let mut c = *q;
-        let mut k = code;
-        for x in c.iter_mut() {
-            *x = step(*x, k % 3 - 1);
-            k /= 3;
-        }
-        if maps(&c) {
-            return c;
-        }
-    }
-    *q
-}
-
-/// Frame `(pos, quat)` followed by the child frame `(cpos, cquat)`.
-fn accumulate(
-    pos: &[f64; 3],
-    quat: &[f64; 4],
-    cpos: &[f64; 3],
-    cquat: &[f64; 4],
-) -> ([f64; 3], [f64; 4]) {
-    let m = quat2mat(quat);
-    let mut p = *pos;
-    for (r, pr) in p.iter_mut().enumerate() {
-        *pr += m[3 * r] * cpos[0] + m[3 * r + 1] * cpos[1] + m[3 * r + 2] * cpos[2];
-    }
-    (p, mulquat_unit(quat, cquat))
-}
-
 struct Tree<'a> {
     links: &'a [&'a Element],
     names: &'a [&'a str],
     parent_joint: &'a [Option<&'a Element>],
     children: &'a [Vec<usize>],
-    fusestatic: bool,
 }
 
 impl Tree<'_> {
-    fn build(
-        &self,
-        i: usize,
-        conv: &mut Converter,
-        out: &mut Element,
-        place: Place,
-    ) -> Result<(), String> {
+    /// Writes link `i` and its subtree into `out`: a body per link (static links are fused by
+    /// the compiler's `fusestatic`, which the conversion turns on unless the model turns it off).
+    fn build(&self, i: usize, conv: &mut Converter, out: &mut Element) -> Result<(), String> {
         let link = self.links[i];
         if self.names[i] == "world" {
             conv.link(link, out, true)?;
             for &c in &self.children[i] {
-                self.build(c, conv, out, Place::World)?;
-            }
-            return Ok(());
-        }
-        conv.nbody += 1;
-        let id = conv.nbody;
-        let pj = self.parent_joint[i];
-        let moving = pj
-            .and_then(|j| j.attr("type"))
-            .is_some_and(|t| MOVING.contains(&t));
-        if !moving && self.fusestatic {
-            // a static link is fused into its parent (2.2.2's fusestatic)
-            let (pos, mut quat) = match pj {
-                Some(j) => {
-                    joint(j, &mut new_el("body", j.line))?;
-                    origin(j)?
-                }
-                None => ([0.0; 3], [1.0, 0.0, 0.0, 0.0]),
-            };
-            crate::compiler::frame::normalize(&mut quat);
-            let (into_world, fpos, fquat) = match place {
-                Place::World => (true, pos, quat),
-                Place::Moving => (false, pos, quat),
-                Place::Fused(w, p, q) => {
-                    let (a, b) = accumulate(&p, &q, &pos, &quat);
-                    (w, a, b)
-                }
-            };
-            let mut tmp = new_el("body", link.line);
-            conv.link(link, &mut tmp, false)?;
-            for mut g in tmp.children {
-                if g.name == "inertial" && conv.plain_inertia {
-                    check_inertia(&g, self.names[i], id)?;
-                }
-                if g.name == "inertial" {
-                    if !into_world {
-                        add_mass(out, &g, &fpos, &fquat, conv.plain_inertia, link)?;
-                    }
-                    continue;
-                }
-                if !into_world && tmp_has_no_inertial(link) {
-                    return Err(err(
-                        link,
-                        "fusing a static link without inertial into a moving link is not implemented",
-                    ));
-                }
-                change_frame(&mut g, &fpos, &fquat);
-                if into_world {
-                    conv.fused_geoms.push(g);
-                } else {
-                    out.children.push(g);
-                }
-            }
-            for &c in &self.children[i] {
-                self.build(c, conv, out, Place::Fused(into_world, fpos, fquat))?;
+                self.build(c, conv, out)?;
             }
             return Ok(());
         }
         let mut body = new_el("body", link.line);
         body.attrs.push(("name".into(), self.names[i].into()));
-        if let Some(j) = pj {
+        if let Some(j) = self.parent_joint[i] {
             joint(j, &mut body)?;
         }
-        if let Place::Fused(_, p, q) = place {
-            change_frame(&mut body, &p, &q);
-        }
         conv.link(link, &mut body, false)?;
-        if conv.plain_inertia {
-            // checked here to name the body by its id before fusion, as 2.2.2 does
-            if let Some(inertial) = body.children.iter().find(|c| c.name == "inertial") {
-                check_inertia(inertial, self.names[i], id)?;
-            }
-        }
         for &c in &self.children[i] {
-            self.build(c, conv, &mut body, Place::Moving)?;
+            self.build(c, conv, &mut body)?;
         }
         out.children.push(body);
         Ok(())
