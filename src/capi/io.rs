@@ -291,18 +291,49 @@ pub unsafe extern "C" fn mj_addFileVFS(
     let Some(vfs) = vfs.as_mut() else {
         return -1;
     };
+    // 2.2.2 reads `filename` as given (relative to the working directory): `directory` is not
+    // used, and programs written for 2.2.2 rely on that
+    let _ = directory;
     let name = cstr(filename);
-    let path = format!("{}{}", cstr(directory), name);
     if vfs.nfile >= mjMAXVFS as i32 - 1 {
         return 1;
     }
     if vfs_find(vfs, &name).is_some() {
         return 2;
     }
-    match std::fs::read(&path) {
-        Ok(data) => vfs_add(vfs, &name, &data, data.len()),
-        Err(_) => -1,
+    match file_to_memory(&name) {
+        Some(data) => vfs_add(vfs, &name, &data, data.len()),
+        None => -1,
     }
+}
+
+/// A whole file, read as 2.2.2's mju_fileToMemory reads it, with its warnings (a directory
+/// opens, and its size does not fit an int).
+pub fn file_to_memory(name: &str) -> Option<Vec<u8>> {
+    use std::io::{Read, Seek, SeekFrom};
+    let mut f = std::fs::File::open(name).ok()?;
+    let size = match f.seek(SeekFrom::End(0)) {
+        Ok(n) if n > i32::MAX as u64 => {
+            warning(&format!(
+                "File size over 2GB is not supported. File: '{name}'"
+            ));
+            return None;
+        }
+        Ok(n) => n as usize,
+        Err(_) => {
+            warning(&format!("Failed to calculate size for '{name}'"));
+            return None;
+        }
+    };
+    let mut buf = Vec::with_capacity(size);
+    let read = f
+        .seek(SeekFrom::Start(0))
+        .and_then(|_| f.take(size as u64).read_to_end(&mut buf));
+    if read.is_err() {
+        warning(&format!("Read error while reading '{name}'"));
+        return None;
+    }
+    Some(buf)
 }
 
 #[no_mangle]
