@@ -69,6 +69,16 @@ pub(crate) fn read_nums<T: std::str::FromStr + From<f32> + Copy + PartialEq + In
         }
         n += 1;
     }
+    // 2.2.2 reads tokens while its stream is not at the end: after trailing whitespace one more
+    // read fails and leaves the last token in place, which fills the next value again
+    if n > 0 && n < out.len() && text.ends_with(|c: char| c.is_ascii_whitespace()) {
+        out[n] = out[n - 1];
+        #[allow(clippy::eq_op)]
+        if out[n] != out[n] {
+            crate::capi::errmem::warning("XML contains a 'NaN'. Please check it carefully.");
+        }
+        n += 1;
+    }
     if exact && n < out.len() {
         return Err(xerr(
             el,
