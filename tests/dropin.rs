@@ -213,14 +213,22 @@ fn compile_writes_identical_mjb() {
     let dir = work_dir("mjb");
     let (mut same, mut unsupported, mut differ) = (0, 0, Vec::new());
     for (i, f) in files.iter().enumerate() {
-        let (r, o) = (dir.join(format!("{i}-ref.mjb")), dir.join(format!("{i}-ours.mjb")));
+        let (r, o) = (
+            dir.join(format!("{i}-ref.mjb")),
+            dir.join(format!("{i}-ours.mjb")),
+        );
         let _ = (std::fs::remove_file(&r), std::fs::remove_file(&o));
         let (rs, os) = (r.to_string_lossy(), o.to_string_lossy());
         run(Path::new(COMPILE), &[f, &rs], &[], 120);
         let Ok(want) = std::fs::read(&r) else {
             continue; // the reference rejects it
         };
-        let out = run(Path::new(COMPILE), &[f, &os], &[("LD_LIBRARY_PATH", &ld)], 120);
+        let out = run(
+            Path::new(COMPILE),
+            &[f, &os],
+            &[("LD_LIBRARY_PATH", &ld)],
+            120,
+        );
         match std::fs::read(&o) {
             Ok(got) if got == want => same += 1,
             Err(_) if text(&out.stdout).contains("not supported") => unsupported += 1,

@@ -114,6 +114,9 @@ fn stepping_does_not_allocate() {
         "extra/contact_pgs_pyramidal_dense_ns5",
         "extra/callbacks",
         "extra/lengthrange",
+        "extra/mesh_files",
+        "extra/mesh_inline",
+        "extra/fusestatic",
     ];
     for name in ["pendulum", "arm3", "freebox", "chain"]
         .into_iter()
