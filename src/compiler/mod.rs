@@ -3,9 +3,12 @@
 //! `compile` does all work that needs no engine; `fill` writes the arrays of a model allocated
 //! with the sizes it found; `set_const` runs the engine's qpos0-dependent constants.
 
+pub mod composite;
+mod composite_skin;
 pub mod frame;
 pub mod image;
 pub mod objects;
+pub mod skin;
 pub mod spec;
 #[cfg(test)]
 mod tests;

@@ -75,6 +75,7 @@ pub struct Compiled {
     textures: Vec<(i32, i32, i32, Vec<u8>)>,
     texture_names: Vec<String>,
     hfields: Vec<HField>,
+    skins: Vec<super::skin::CSkin>,
     geom_hfield: Vec<Option<usize>>,
     materials: Vec<Material>,
     mat_texid: Vec<i32>,
@@ -611,6 +612,13 @@ pub fn compile(mut spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> 
     }
     let geoms: Vec<FGeom> = geoms.into_iter().flatten().collect();
     let sites: Vec<FSite> = sites.into_iter().flatten().collect();
+
+    let skins = {
+        let body = |n: &str| find_body(&bodies, n);
+        let mats = &spec.materials;
+        let matid = |n: &str| mats.iter().position(|m| m.name == n);
+        super::skin::compile(std::mem::take(&mut spec.skins), &body, &matid)?
+    };
 
     // height fields: elevation is all zero without a file
     for (id, hf) in spec.hfields.iter_mut().enumerate() {
@@ -1171,6 +1179,8 @@ pub fn compile(mut spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> 
     nnames += sites.iter().map(|s| s.spec.name.len() + 1).sum::<usize>();
     nnames += cameras.iter().map(|c| c.0.name.len() + 1).sum::<usize>();
     nnames += lights.iter().map(|l| l.0.name.len() + 1).sum::<usize>();
+    nnames += skins.iter().map(|s| s.name.len() + 1).sum::<usize>();
+    super::skin::sizes(&skins, &mut h);
     nnames += hfields.iter().map(|h| h.name.len() + 1).sum::<usize>();
     h.nhfield = hfields.len() as i32;
     h.nhfielddata = hfields.iter().map(|h| h.nrow * h.ncol).sum();
@@ -1368,6 +1378,7 @@ pub fn compile(mut spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> 
         textures,
         texture_names: spec.textures.iter().map(|t| t.name.clone()).collect(),
         hfields,
+        skins,
         geom_hfield,
         materials,
         mat_texid,
@@ -1909,6 +1920,9 @@ impl Compiled {
         for (i, l) in self.lights.iter().enumerate() {
             name(&mut m.name_lightadr[i], &l.0.name, m.names);
         }
+        for (i, sk) in self.skins.iter().enumerate() {
+            name(&mut m.name_skinadr[i], &sk.name, m.names);
+        }
         for (i, hf) in self.hfields.iter().enumerate() {
             name(&mut m.name_hfieldadr[i], &hf.name, m.names);
         }
@@ -2173,6 +2187,7 @@ impl Compiled {
         }
 
         // assets
+        super::skin::fill(&self.skins, m);
         let mut adr = 0;
         for (i, hf) in self.hfields.iter().enumerate() {
             put(m.hfield_size, i, &hf.size);
