@@ -237,6 +237,11 @@ pub fn compile(mut spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> 
         lights.iter().map(|l| (l.0.name.as_str(), l.0.line)),
         "light",
     )?;
+    check_names(spec.skins.iter().map(|s| (s.name.as_str(), s.line)), "skin")?;
+    check_names(
+        spec.hfields.iter().map(|h| (h.name.as_str(), h.line)),
+        "hfield",
+    )?;
     check_names(
         spec.textures.iter().map(|t| (t.name.as_str(), t.line)),
         "texture",
