@@ -407,7 +407,7 @@ fn grid(g: &mut Gen, dim: usize) -> Result<(), String> {
     }
     if let Some(s) = &c.skin {
         let skin = if s.subgrid > 0 {
-            super::composite_skin::grid_subgrid(c, s)
+            super::composite_skin::grid_subgrid(c, s)?
         } else {
             super::composite_skin::grid(c, s)
         };
@@ -486,6 +486,7 @@ fn rope(g: &mut Gen, dim: usize) -> Result<(), String> {
             name2: b2.clone(),
             solref: c.solref_smooth,
             solimp: c.solimp_smooth,
+            line: -1,
             ..g.main_eq.clone()
         };
         eq.data[..3].copy_from_slice(&[-0.5 * c.spacing, 0.0, 0.0]);
@@ -625,7 +626,7 @@ fn cloth(g: &mut Gen, dim: usize) -> Result<(), String> {
     }
     if let Some(s) = &c.skin {
         let skin = if s.subgrid > 0 {
-            super::composite_skin::grid_subgrid(c, s)
+            super::composite_skin::grid_subgrid(c, s)?
         } else {
             super::composite_skin::grid(c, s)
         };
@@ -823,6 +824,7 @@ fn solid(g: &mut Gen, dim: usize) -> Result<(), String> {
                             name2: format!("{p}J{}_{}_{}", j1[0], j1[1], j1[2]),
                             solref: c.solref_smooth,
                             solimp: c.solimp_smooth,
+                            line: -1,
                             ..g.main_eq.clone()
                         });
                     }

@@ -158,13 +158,22 @@ fn differences(ex: usize, ey: usize) -> [f64; 256] {
 
 /// Sheet skin refined by `subgrid` points between bodies, vertices bound to the 16 nearest
 /// bodies with bicubic weights.
-pub fn grid_subgrid(c: &Composite, s: &CompSkin) -> Skin {
+pub fn grid_subgrid(c: &Composite, s: &CompSkin) -> Result<Skin, String> {
     use crate::math::blas::mul_mat_mat;
     let sub = s.subgrid;
-    let m = (2 + sub) as usize;
+    let m = (2 + sub as i64) as usize;
     let np = m * m;
     let step = 1.0 / (1 + sub) as f64;
-    let mut xy = vec![0.0; np * 16];
+    // a huge subgrid fails to allocate, as 2.2.2's does
+    let zeros = |n: usize| -> Result<Vec<f64>, String> {
+        let mut v = Vec::new();
+        v.try_reserve_exact(n)
+            .map_err(|_| "Could not allocate memory".to_string())?;
+        v.resize(n, 0.0);
+        Ok(v)
+    };
+    let mut weight = zeros(9 * np * 16)?;
+    let mut xy = zeros(np * 16)?;
     for sx in 0..m {
         for sy in 0..m {
             let (x, y) = (sx as f64 * step, sy as f64 * step);
@@ -182,9 +191,8 @@ pub fn grid_subgrid(c: &Composite, s: &CompSkin) -> Skin {
             }
         }
     }
-    let mut xy_w = vec![0.0; np * 16];
+    let mut xy_w = zeros(np * 16)?;
     mul_mat_mat(&mut xy_w, &xy, &BICUBIC, np, 16, 16);
-    let mut weight = vec![0.0; 9 * np * 16];
     for ex in 0..3 {
         for ey in 0..3 {
             let d = differences(ex, ey);
@@ -256,7 +264,7 @@ pub fn grid_subgrid(c: &Composite, s: &CompSkin) -> Skin {
             }
         }
     }
-    sk
+    Ok(sk)
 }
 
 /// One face of a box skin: its own vertices, one bone per body.

@@ -1141,13 +1141,67 @@ fn ints(el: &Element, name: &str, out: &mut [i32], required: bool) -> R<usize> {
     Ok(n)
 }
 
-/// Numbers of a free-length list attribute, read until the first that does not parse.
-fn list<T: std::str::FromStr>(el: &Element, name: &str) -> Option<Vec<T>> {
-    el.attr(name).map(|t| {
-        t.split_ascii_whitespace()
-            .map_while(|x| x.parse().ok())
-            .collect()
-    })
+/// Numbers of a free-length list attribute, read as C++ stream extraction reads them: each
+/// number is the longest prefix that looks like one; reading stops at the first failure (no
+/// number, or out of range).
+fn list<T: ListNum>(el: &Element, name: &str) -> Option<Vec<T>> {
+    let text = el.attr(name)?;
+    let b = text.as_bytes();
+    let mut out = Vec::new();
+    let mut k = 0;
+    loop {
+        while k < b.len() && b[k].is_ascii_whitespace() {
+            k += 1;
+        }
+        let start = k;
+        if k < b.len() && (b[k] == b'+' || b[k] == b'-') {
+            k += 1;
+        }
+        let digits = |k: &mut usize| {
+            let s = *k;
+            while *k < b.len() && b[*k].is_ascii_digit() {
+                *k += 1;
+            }
+            *k > s
+        };
+        let mut any = digits(&mut k);
+        if T::REAL {
+            if k < b.len() && b[k] == b'.' {
+                k += 1;
+                any |= digits(&mut k);
+            }
+            if any && k < b.len() && (b[k] == b'e' || b[k] == b'E') {
+                k += 1;
+                if k < b.len() && (b[k] == b'+' || b[k] == b'-') {
+                    k += 1;
+                }
+                digits(&mut k);
+            }
+        }
+        match T::convert(&text[start..k]) {
+            Some(v) if any => out.push(v),
+            _ => return Some(out),
+        }
+    }
+}
+
+trait ListNum: Sized {
+    const REAL: bool;
+    fn convert(s: &str) -> Option<Self>;
+}
+
+impl ListNum for f32 {
+    const REAL: bool = true;
+    fn convert(s: &str) -> Option<f32> {
+        s.parse::<f32>().ok().filter(|v| v.is_finite())
+    }
+}
+
+impl ListNum for i32 {
+    const REAL: bool = false;
+    fn convert(s: &str) -> Option<i32> {
+        s.parse::<i32>().ok()
+    }
 }
 
 fn skin_group(el: &Element, out: &mut i32) -> R<()> {
