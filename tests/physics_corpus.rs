@@ -8,8 +8,9 @@
 mod common;
 use common::*;
 
-/// Models larger than this (nv) are left out: their dumps would run to many GBs.
-const MAX_NV: i32 = 3000;
+/// Models larger than this (nv) are left out: their dumps would run to many GBs (humanoid100,
+/// nv 2700, stays in; the 1000-particle composite, nv 3000, with its contacts, does not).
+const MAX_NV: i32 = 2700;
 
 #[test]
 fn corpus_physics() {

@@ -205,6 +205,10 @@ pub fn load_files(
         hf.bytes = load(&name).filter(|b| !b.is_empty());
         hf.file = name;
     }
+    for sk in spec.skins.iter_mut().filter(|s| !s.file.is_empty()) {
+        sk.path = full_name(model_dir, &c.meshdir, &sk.file, c.strippath);
+        sk.bytes = load(&sk.path);
+    }
     for t in spec.textures.iter_mut() {
         for k in 0..7 {
             if !t.file_names[k].is_empty() {

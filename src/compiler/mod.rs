@@ -3,12 +3,15 @@
 //! `compile` does all work that needs no engine; `fill` writes the arrays of a model allocated
 //! with the sizes it found; `set_const` runs the engine's qpos0-dependent constants.
 
+pub mod composite;
+mod composite_skin;
 pub mod frame;
 mod hull;
 pub mod image;
 pub mod mesh;
 mod obj;
 pub mod objects;
+pub mod skin;
 pub mod spec;
 #[cfg(test)]
 mod tests;

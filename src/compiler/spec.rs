@@ -613,6 +613,56 @@ impl Default for Texture {
     }
 }
 
+/// One bone of a skin: body, bind pose, vertices and their weights.
+#[derive(Debug, Clone, Default)]
+pub struct Bone {
+    pub body: String,
+    pub bindpos: [f32; 3],
+    pub bindquat: [f32; 4],
+    pub vertid: Vec<i32>,
+    pub vertweight: Vec<f32>,
+}
+
+/// `<skin>` asset or a composite's skin.
+#[derive(Debug, Clone)]
+pub struct Skin {
+    pub name: String,
+    pub line: Line,
+    pub file: String,
+    /// `file` with the model and mesh directories, set before compiling
+    pub path: String,
+    pub material: String,
+    pub rgba: [f32; 4],
+    pub inflate: f32,
+    pub group: i32,
+    pub vert: Vec<f32>,
+    pub texcoord: Vec<f32>,
+    pub face: Vec<i32>,
+    pub bones: Vec<Bone>,
+    /// contents of `file` (None when it could not be read), set before compiling
+    pub bytes: Option<Vec<u8>>,
+}
+
+impl Default for Skin {
+    fn default() -> Self {
+        Skin {
+            name: String::new(),
+            line: -1,
+            file: String::new(),
+            path: String::new(),
+            material: String::new(),
+            rgba: [0.5, 0.5, 0.5, 1.0],
+            inflate: 0.0,
+            group: 0,
+            vert: Vec::new(),
+            texcoord: Vec::new(),
+            face: Vec::new(),
+            bones: Vec::new(),
+            bytes: None,
+        }
+    }
+}
+
 #[derive(Debug, Clone)]
 pub struct Material {
     pub name: String,
@@ -823,6 +873,7 @@ pub struct ModelSpec {
     pub actuators: Vec<Actuator>,
     pub hfields: Vec<HField>,
     pub meshes: Vec<Mesh>,
+    pub skins: Vec<Skin>,
     pub textures: Vec<Texture>,
     pub materials: Vec<Material>,
     pub pairs: Vec<Pair>,
@@ -863,6 +914,7 @@ impl Default for ModelSpec {
             actuators: Vec::new(),
             hfields: Vec::new(),
             meshes: Vec::new(),
+            skins: Vec::new(),
             textures: Vec::new(),
             materials: Vec::new(),
             pairs: Vec::new(),

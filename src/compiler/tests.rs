@@ -78,3 +78,39 @@ fn garbage_never_panics() {
         let _ = read(text);
     }
 }
+
+#[test]
+fn rope_composite_expands_into_a_chain() {
+    let spec = read(
+        r#"<mujoco><worldbody><body name="B1"><composite type="rope" count="4 1 1" spacing=".1">
+        <joint kind="twist"/><geom type="capsule" size=".01 .02"/></composite></body>
+        </worldbody></mujoco>"#,
+    )
+    .unwrap();
+    let root = &spec.world.bodies[0];
+    // root keeps its geom; children to the right (B2, B3) then to the left (B0)
+    assert_eq!(root.geoms[0].name, "G1");
+    let names: Vec<&str> = root.bodies.iter().map(|b| b.name.as_str()).collect();
+    assert_eq!(names, ["B2", "B0"]);
+    assert_eq!(root.bodies[0].bodies[0].name, "B3");
+    let b2 = &root.bodies[0];
+    let joints: Vec<&str> = b2.joints.iter().map(|j| j.name.as_str()).collect();
+    assert_eq!(joints, ["J0_2", "J1_2", "JT2"]);
+    assert_eq!(b2.joints[0].group, 3);
+    // one twist constraint per non-root element
+    assert_eq!(spec.equalities.len(), 3);
+}
+
+#[test]
+fn skin_lists_stop_where_a_stream_would() {
+    let spec = read(
+        r#"<mujoco><asset><skin vertex="1 2.5e1 3x 4" face="1 2e3 4" texcoord="nan 1">
+        <bone body="world" bindpos="0 0 0" bindquat="1 0 0 0" vertid="0" vertweight="1"/>
+        </skin></asset></mujoco>"#,
+    )
+    .unwrap();
+    let s = &spec.skins[0];
+    assert_eq!(s.vert, [1.0, 25.0, 3.0]);
+    assert_eq!(s.face, [1, 2]);
+    assert!(s.texcoord.is_empty());
+}

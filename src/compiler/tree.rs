@@ -77,6 +77,7 @@ pub struct Compiled {
     textures: Vec<(i32, i32, i32, Vec<u8>)>,
     texture_names: Vec<String>,
     hfields: Vec<HField>,
+    skins: Vec<super::skin::CSkin>,
     geom_hfield: Vec<Option<usize>>,
     meshes: Vec<super::mesh::Mesh>,
     geom_mesh: Vec<Option<usize>>,
@@ -243,6 +244,11 @@ pub fn compile(mut spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> 
     check_names(
         spec.meshes.iter().map(|m| (m.name.as_str(), m.line)),
         "mesh",
+    )?;
+    check_names(spec.skins.iter().map(|s| (s.name.as_str(), s.line)), "skin")?;
+    check_names(
+        spec.hfields.iter().map(|h| (h.name.as_str(), h.line)),
+        "hfield",
     )?;
     check_names(
         spec.textures.iter().map(|t| (t.name.as_str(), t.line)),
@@ -663,6 +669,13 @@ pub fn compile(mut spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> 
     }
     let mut geoms: Vec<FGeom> = geoms.into_iter().flatten().collect();
     let mut sites: Vec<FSite> = sites.into_iter().flatten().collect();
+
+    let skins = {
+        let body = |n: &str| find_body(&bodies, n);
+        let mats = &spec.materials;
+        let matid = |n: &str| mats.iter().position(|m| m.name == n);
+        super::skin::compile(std::mem::take(&mut spec.skins), &body, &matid)?
+    };
 
     // height fields: elevation is all zero without a file
     for (id, hf) in spec.hfields.iter_mut().enumerate() {
@@ -1192,7 +1205,8 @@ pub fn compile(mut spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> 
     }
 
     // static bodies into their parents, when no other object refers to body ids
-    let refs = !pairs.is_empty()
+    let refs = !skins.is_empty()
+        || !pairs.is_empty()
         || !excludes.is_empty()
         || !equalities.is_empty()
         || !tendons.is_empty()
@@ -1245,6 +1259,8 @@ pub fn compile(mut spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> 
         h.nmeshtexvert += (m.texcoord.len() / 2) as i32;
         h.nmeshgraph += m.graph.len() as i32;
     }
+    nnames += skins.iter().map(|s| s.name.len() + 1).sum::<usize>();
+    super::skin::sizes(&skins, &mut h);
     nnames += hfields.iter().map(|h| h.name.len() + 1).sum::<usize>();
     h.nhfield = hfields.len() as i32;
     h.nhfielddata = hfields.iter().map(|h| h.nrow * h.ncol).sum();
@@ -1442,6 +1458,7 @@ pub fn compile(mut spec: ModelSpec, mut h: mjModel) -> Result<Compiled, CError> 
         textures,
         texture_names: spec.textures.iter().map(|t| t.name.clone()).collect(),
         hfields,
+        skins,
         geom_hfield,
         meshes,
         geom_mesh,
@@ -1988,6 +2005,9 @@ impl Compiled {
         for (i, mesh) in self.meshes.iter().enumerate() {
             name(&mut m.name_meshadr[i], &mesh.name, m.names);
         }
+        for (i, sk) in self.skins.iter().enumerate() {
+            name(&mut m.name_skinadr[i], &sk.name, m.names);
+        }
         for (i, hf) in self.hfields.iter().enumerate() {
             name(&mut m.name_hfieldadr[i], &hf.name, m.names);
         }
@@ -2252,6 +2272,7 @@ impl Compiled {
         }
 
         // assets
+        super::skin::fill(&self.skins, m);
         let mut adr = 0;
         for (i, hf) in self.hfields.iter().enumerate() {
             put(m.hfield_size, i, &hf.size);

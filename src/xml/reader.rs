@@ -1,6 +1,7 @@
 //! MJCF element tree to `ModelSpec`: sections in 2.2.2's order, defaults classes applied.
 
 use super::tree::Element;
+use crate::compiler::composite::{self, Added, CompSkin, Composite};
 use crate::compiler::spec::*;
 
 type R<T> = Result<T, String>;
@@ -955,6 +956,7 @@ fn read_assets(spec: &mut ModelSpec, el: &Element) -> R<()> {
                 read_nums(c, "size", &mut hf.size, true, true)?;
                 spec.hfields.push(hf);
             }
+            "skin" => spec.skins.push(read_skin(c)?),
             "material" => {
                 let mut m = spec.defaults[def].material.clone();
                 one_material(c, &mut m)?;
@@ -1090,7 +1092,14 @@ fn read_default(spec: &mut ModelSpec, el: &Element, parent: Option<usize>) -> R<
     Ok(())
 }
 
-fn read_body(spec: &ModelSpec, el: &Element, body: &mut Body, def: usize, world: bool) -> R<()> {
+fn read_body(
+    spec: &ModelSpec,
+    el: &Element,
+    body: &mut Body,
+    def: usize,
+    world: bool,
+    added: &mut Added,
+) -> R<()> {
     if world && !el.attrs.is_empty() {
         return Err(xerr(el, "World body cannot have attributes"));
     }
@@ -1167,13 +1176,279 @@ fn read_body(spec: &ModelSpec, el: &Element, body: &mut Body, def: usize, world:
                 }
                 alternative(c, &mut child.alt)?;
                 user(c, &mut child.user)?;
-                read_body(spec, c, &mut child, childdef, false)?;
+                read_body(spec, c, &mut child, childdef, false, added)?;
                 body.bodies.push(child);
+            }
+            "composite" => {
+                let comp = read_composite(c)?;
+                composite::expand(
+                    &comp,
+                    body,
+                    spec.compiler.global,
+                    &spec.defaults[0].equality,
+                    added,
+                )
+                .map_err(|e| xerr(c, &e))?;
             }
             other => return Err(unsupported(c, other)),
         }
     }
     Ok(())
+}
+
+/// Integers of attribute `name` (up to `out.len()`); returns how many.
+fn ints(el: &Element, name: &str, out: &mut [i32], required: bool) -> R<usize> {
+    let Some(text) = el.attr(name) else {
+        return if required {
+            Err(xerr(el, &format!("required attribute missing: '{name}'")))
+        } else {
+            Ok(0)
+        };
+    };
+    let mut toks = text.split_ascii_whitespace();
+    let bad = || xerr(el, &format!("problem reading attribute '{name}'"));
+    if toks.clone().next().is_none() {
+        return Err(bad());
+    }
+    let mut n = 0;
+    while n < out.len() {
+        let Some(tok) = toks.next() else { break };
+        out[n] = tok.parse().map_err(|_| bad())?;
+        n += 1;
+    }
+    if toks.next().is_some() {
+        return Err(xerr(el, &format!("attribute '{name}' has too much data")));
+    }
+    Ok(n)
+}
+
+/// Numbers of a free-length list attribute, read as C++ stream extraction reads them: each
+/// number is the longest prefix that looks like one; reading stops at the first failure (no
+/// number, or out of range).
+fn list<T: ListNum>(el: &Element, name: &str) -> Option<Vec<T>> {
+    let text = el.attr(name)?;
+    let b = text.as_bytes();
+    let mut out = Vec::new();
+    let mut k = 0;
+    loop {
+        while k < b.len() && b[k].is_ascii_whitespace() {
+            k += 1;
+        }
+        let start = k;
+        if k < b.len() && (b[k] == b'+' || b[k] == b'-') {
+            k += 1;
+        }
+        let digits = |k: &mut usize| {
+            let s = *k;
+            while *k < b.len() && b[*k].is_ascii_digit() {
+                *k += 1;
+            }
+            *k > s
+        };
+        let mut any = digits(&mut k);
+        if T::REAL {
+            if k < b.len() && b[k] == b'.' {
+                k += 1;
+                any |= digits(&mut k);
+            }
+            if any && k < b.len() && (b[k] == b'e' || b[k] == b'E') {
+                k += 1;
+                if k < b.len() && (b[k] == b'+' || b[k] == b'-') {
+                    k += 1;
+                }
+                digits(&mut k);
+            }
+        }
+        match T::convert(&text[start..k]) {
+            Some(v) if any => out.push(v),
+            _ => return Some(out),
+        }
+    }
+}
+
+trait ListNum: Sized {
+    const REAL: bool;
+    fn convert(s: &str) -> Option<Self>;
+}
+
+impl ListNum for f32 {
+    const REAL: bool = true;
+    fn convert(s: &str) -> Option<f32> {
+        s.parse::<f32>().ok().filter(|v| v.is_finite())
+    }
+}
+
+impl ListNum for i32 {
+    const REAL: bool = false;
+    fn convert(s: &str) -> Option<i32> {
+        s.parse::<i32>().ok()
+    }
+}
+
+fn skin_group(el: &Element, out: &mut i32) -> R<()> {
+    int(el, "group", out)?;
+    if !(0..6).contains(out) {
+        return Err(xerr(el, "skin group must be between 0 and 5"));
+    }
+    Ok(())
+}
+
+fn read_skin(el: &Element) -> R<Skin> {
+    let mut s = Skin {
+        line: el.line,
+        ..Skin::default()
+    };
+    text(el, "name", &mut s.name);
+    text(el, "file", &mut s.file);
+    text(el, "material", &mut s.material);
+    skin_group(el, &mut s.group)?;
+    rgba(el, &mut s.rgba)?;
+    read_nums(
+        el,
+        "inflate",
+        std::slice::from_mut(&mut s.inflate),
+        false,
+        true,
+    )?;
+    s.vert = list(el, "vertex").unwrap_or_default();
+    s.texcoord = list(el, "texcoord").unwrap_or_default();
+    s.face = list(el, "face").unwrap_or_default();
+    for b in el.children.iter().filter(|b| b.name == "bone") {
+        let mut bone = Bone::default();
+        read_text(b, "body", &mut bone.body)?;
+        read_nums(b, "bindpos", &mut bone.bindpos, true, true)?;
+        read_nums(b, "bindquat", &mut bone.bindquat, true, true)?;
+        let mut t = String::new();
+        read_text(b, "vertid", &mut t)?;
+        bone.vertid = list(b, "vertid").unwrap_or_default();
+        read_text(b, "vertweight", &mut t)?;
+        bone.vertweight = list(b, "vertweight").unwrap_or_default();
+        s.bones.push(bone);
+    }
+    Ok(s)
+}
+
+fn read_composite(el: &Element) -> R<Composite> {
+    use composite::{JOINT, SHEAR, STRETCH, TENDON, TWIST};
+    let mut c = Composite::default();
+    text(el, "prefix", &mut c.prefix);
+    match keyword(el, "type", &composite::TYPES)? {
+        Some(k) => c.kind = k,
+        None => return Err(xerr(el, "required attribute missing: 'type'")),
+    }
+    ints(el, "count", &mut c.count, true)?;
+    read_nums(
+        el,
+        "spacing",
+        std::slice::from_mut(&mut c.spacing),
+        true,
+        true,
+    )?;
+    nums(el, "offset", &mut c.offset)?;
+    num(el, "flatinertia", &mut c.flatinertia)?;
+    if let Some(e) = el.children.iter().find(|e| e.name == "skin") {
+        let mut s = CompSkin::default();
+        if let Some(b) = boolean(e, "texcoord")? {
+            s.texcoord = b;
+        }
+        text(e, "material", &mut s.material);
+        rgba(e, &mut s.rgba)?;
+        read_nums(
+            e,
+            "inflate",
+            std::slice::from_mut(&mut s.inflate),
+            false,
+            true,
+        )?;
+        int(e, "subgrid", &mut s.subgrid)?;
+        skin_group(e, &mut s.group)?;
+        c.skin = Some(s);
+    }
+    c.set_defaults();
+    some_nums(el, "solrefsmooth", &mut c.solref_smooth)?;
+    some_nums(el, "solimpsmooth", &mut c.solimp_smooth)?;
+    if let Some(e) = el.children.iter().find(|e| e.name == "geom") {
+        let g = &mut c.geom;
+        if let Some(i) = keyword(e, "type", &GEOM_TYPES)? {
+            g.kind = i as i32;
+        }
+        some_nums(e, "size", &mut g.size)?;
+        int(e, "contype", &mut g.contype)?;
+        int(e, "conaffinity", &mut g.conaffinity)?;
+        int(e, "condim", &mut g.condim)?;
+        int(e, "group", &mut g.group)?;
+        int(e, "priority", &mut g.priority)?;
+        some_nums(e, "friction", &mut g.friction)?;
+        num(e, "solmix", &mut g.solmix)?;
+        some_nums(e, "solref", &mut g.solref)?;
+        some_nums(e, "solimp", &mut g.solimp)?;
+        num(e, "margin", &mut g.margin)?;
+        num(e, "gap", &mut g.gap)?;
+        text(e, "material", &mut g.material);
+        rgba(e, &mut g.rgba)?;
+        num(e, "mass", &mut g.mass)?;
+        num(e, "density", &mut g.density)?;
+    }
+    if let Some(e) = el.children.iter().find(|e| e.name == "site") {
+        let s = &mut c.site;
+        some_nums(e, "size", &mut s.size)?;
+        int(e, "group", &mut s.group)?;
+        text(e, "material", &mut s.material);
+        rgba(e, &mut s.rgba)?;
+    }
+    // `limited` of joints and tendons is not read by 2.2.2
+    for e in el.children.iter().filter(|e| e.name == "joint") {
+        let k = match keyword(e, "kind", &["main", "twist", "stretch"])? {
+            Some(k) => [JOINT, TWIST, STRETCH][k],
+            None => return Err(xerr(e, "required attribute missing: 'kind'")),
+        };
+        c.add[k] = true;
+        let eq = &mut c.equalities[k];
+        some_nums(e, "solreffix", &mut eq.solref)?;
+        some_nums(e, "solimpfix", &mut eq.solimp)?;
+        let j = &mut c.joints[k];
+        int(e, "group", &mut j.group)?;
+        some_nums(e, "solreflimit", &mut j.solref_limit)?;
+        some_nums(e, "solimplimit", &mut j.solimp_limit)?;
+        some_nums(e, "solreffriction", &mut j.solref_friction)?;
+        some_nums(e, "solimpfriction", &mut j.solimp_friction)?;
+        num(e, "stiffness", &mut j.stiffness)?;
+        nums(e, "range", &mut j.range)?;
+        num(e, "margin", &mut j.margin)?;
+        num(e, "armature", &mut j.armature)?;
+        num(e, "damping", &mut j.damping)?;
+        num(e, "frictionloss", &mut j.frictionloss)?;
+    }
+    for e in el.children.iter().filter(|e| e.name == "tendon") {
+        let k = match keyword(e, "kind", &["main", "shear"])? {
+            Some(k) => [TENDON, SHEAR][k],
+            None => return Err(xerr(e, "required attribute missing: 'kind'")),
+        };
+        c.add[k] = true;
+        let eq = &mut c.equalities[k];
+        some_nums(e, "solreffix", &mut eq.solref)?;
+        some_nums(e, "solimpfix", &mut eq.solimp)?;
+        let t = &mut c.tendons[k];
+        int(e, "group", &mut t.group)?;
+        some_nums(e, "solreflimit", &mut t.solref_limit)?;
+        some_nums(e, "solimplimit", &mut t.solimp_limit)?;
+        some_nums(e, "solreffriction", &mut t.solref_friction)?;
+        some_nums(e, "solimpfriction", &mut t.solimp_friction)?;
+        nums(e, "range", &mut t.range)?;
+        num(e, "margin", &mut t.margin)?;
+        num(e, "stiffness", &mut t.stiffness)?;
+        num(e, "damping", &mut t.damping)?;
+        num(e, "frictionloss", &mut t.frictionloss)?;
+        text(e, "material", &mut t.material);
+        rgba(e, &mut t.rgba)?;
+        num(e, "width", &mut t.width)?;
+    }
+    for e in el.children.iter().filter(|e| e.name == "pin") {
+        let mut coord = [0; 2];
+        ints(e, "coord", &mut coord, true)?;
+        c.pin.extend_from_slice(&coord);
+    }
+    Ok(c)
 }
 
 fn read_compiler(spec: &mut ModelSpec, el: &Element) -> R<()> {
@@ -1548,9 +1823,14 @@ pub fn read(root: &Element) -> R<ModelSpec> {
     }
     for s in sections("worldbody") {
         let mut world = std::mem::take(&mut spec.world);
-        let r = read_body(&spec, s, &mut world, 0, true);
+        let mut added = Added::default();
+        let r = read_body(&spec, s, &mut world, 0, true, &mut added);
         spec.world = world;
         r?;
+        spec.tendons.extend(added.tendons);
+        spec.equalities.extend(added.equalities);
+        spec.excludes.extend(added.excludes);
+        spec.skins.extend(added.skins);
     }
     for s in sections("contact") {
         read_contact(&mut spec, s)?;
