@@ -117,6 +117,8 @@ fn stepping_does_not_allocate() {
         "extra/mesh_files",
         "extra/mesh_inline",
         "extra/fusestatic",
+        "extra/adhesion_pyramidal_sparse",
+        "extra/composite_chains",
     ];
     for name in ["pendulum", "arm3", "freebox", "chain"]
         .into_iter()

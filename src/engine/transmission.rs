@@ -1,11 +1,11 @@
 //! Actuator transmissions: lengths and moment arms (joint, joint-in-parent, slider-crank,
-//! tendon, site with and without reference site, body adhesion without contacts).
+//! tendon, site with and without reference site, body adhesion).
 
-use super::jacdif::is_sparse;
+use super::jacdif::{is_sparse, jac_dif_pair};
 use super::jacobian::jac;
-use super::{not_implemented, Data, EngineError, Model, JNT_BALL, JNT_HINGE, JNT_SLIDE};
-use crate::abi::mjtTrn_;
-use crate::math::blas::{add_to, mul_mat_t_vec, scl, sub_from};
+use super::{Data, EngineError, Model, JNT_BALL, JNT_HINGE, JNT_SLIDE};
+use crate::abi::{mjtCone_, mjtTrn_};
+use crate::math::blas::{add_to, mul_mat_mat, mul_mat_t_vec, scl, scl_in_place, sub_from};
 use crate::math::misc::is_zero;
 use crate::math::*;
 
@@ -234,20 +234,79 @@ fn site(m: &Model, k: &Kin, s: &mut Scratch, i: usize, moment: &mut [f64]) -> f6
     length
 }
 
-/// Body (adhesion) transmission: the moment averages the normal Jacobians of the body's
-/// contacts; without such contacts it stays zero.
+/// Body (adhesion) transmission: the moment is minus the average of the normal Jacobians of
+/// the body's contacts (active contacts through efc_J, contacts in the margin gap directly).
 fn body(m: &Model, d: &mut Data, i: usize) -> Result<(), EngineError> {
     let id = m.actuator_trnid()[2 * i];
-    d.actuator_length[i] = 0.0;
+    let nv = m.raw.nv as usize;
+    let nefc = d.raw.nefc.max(0) as usize;
     let ncon = d.raw.ncon.max(0) as usize;
-    for c in d.contact.iter().take(ncon) {
-        let b1 = m.geom_bodyid()[c.geom1 as usize];
-        let b2 = m.geom_bodyid()[c.geom2 as usize];
-        if b1 == id || b2 == id {
-            return Err(not_implemented("body transmission with contacts is"));
+    let elliptic = m.raw.opt.cone == mjtCone_::mjCONE_ELLIPTIC as i32;
+    d.actuator_length[i] = 0.0;
+    d.arena.scope(|a| -> Result<(), EngineError> {
+        let efc_force = a.alloc(nefc)?;
+        let exclude = a.alloc(nv)?;
+        let jacdif = a.alloc(3 * nv)?;
+        let jac1 = a.alloc(3 * nv)?;
+        let jac2 = a.alloc(3 * nv)?;
+        let normal = a.alloc(nv)?;
+        let chain = a.alloc_int(nv)?;
+        efc_force.fill(0.0);
+        exclude.fill(0.0);
+        let mut counter = 0;
+        for c in d.contact.iter().take(ncon) {
+            let b1 = m.geom_bodyid()[c.geom1 as usize];
+            let b2 = m.geom_bodyid()[c.geom2 as usize];
+            if b1 != id && b2 != id {
+                continue;
+            }
+            if c.exclude == 0 {
+                counter += 1;
+                let adr = c.efc_address.max(0) as usize;
+                if c.dim == 1 || elliptic {
+                    if let Some(f) = efc_force.get_mut(adr) {
+                        *f = 1.0;
+                    }
+                } else {
+                    let npyramid = (c.dim - 1) as usize;
+                    for f in efc_force.iter_mut().skip(adr).take(2 * npyramid) {
+                        *f = 0.5 / npyramid as f64;
+                    }
+                }
+            } else if c.exclude == 1 {
+                counter += 1;
+                let n = jac_dif_pair(
+                    m,
+                    d.cdof,
+                    d.subtree_com,
+                    chain,
+                    b1 as usize,
+                    b2 as usize,
+                    &c.pos,
+                    &c.pos,
+                    jac1,
+                    jac2,
+                    jacdif,
+                    false,
+                );
+                mul_mat_mat(normal, &c.frame[..3], jacdif, 1, 3, n);
+                if is_sparse(m) {
+                    for k in 0..n {
+                        exclude[chain[k] as usize] += normal[k];
+                    }
+                } else {
+                    add_to(exclude, &normal[..nv]);
+                }
+            }
         }
-    }
-    Ok(())
+        if counter > 0 {
+            let moment = &mut d.actuator_moment[i * nv..(i + 1) * nv];
+            super::constraint::jac_view!(m, d).mul_t_vec(moment, efc_force);
+            add_to(moment, exclude);
+            scl_in_place(moment, -1.0 / counter as f64);
+        }
+        Ok(())
+    })
 }
 
 /// Joint transmission: scalar gear for slide/hinge, 3D or 6D wrench gear for ball/free.
