@@ -187,6 +187,9 @@ pub fn alloc_data(m: &mjModel) -> Result<*mut mjData, String> {
     // SAFETY: fresh allocations; all-zero bits are a valid mjData header.
     unsafe {
         std::ptr::write_bytes(d as *mut u8, 0, std::mem::size_of::<mjData>());
+        // the stack too: scratch taken from it unzeroed (Arena::alloc_stale) is then never
+        // uninitialized memory
+        std::ptr::write_bytes(stack as *mut u8, 0, nstack * 8);
         (*d).nbuffer = nbuffer as i32;
         (*d).nstack = nstack as i32;
         (*d).buffer = buffer;

@@ -145,6 +145,14 @@ impl<'a> Arena<'a> {
 
     /// `n` zeroed mjtNums, or an error like 2.2.2's "Stack overflow".
     pub fn alloc(&mut self, n: usize) -> Result<&'a mut [f64], EngineError> {
+        let head = self.alloc_stale(n)?;
+        head.fill(0.0);
+        Ok(head)
+    }
+
+    /// `n` mjtNums holding whatever an earlier allocation left there (not zeroed, like
+    /// mj_stackAlloc): for scratch the caller writes before it reads.
+    pub fn alloc_stale(&mut self, n: usize) -> Result<&'a mut [f64], EngineError> {
         if n > self.free.len() {
             return Err(EngineError("Stack overflow".into()));
         }
@@ -153,8 +161,14 @@ impl<'a> Arena<'a> {
         self.free = tail;
         self.used += n;
         self.peak = self.peak.max(self.used);
-        head.fill(0.0);
         Ok(head)
+    }
+
+    /// `n` ints, not zeroed (see `alloc_stale`).
+    pub fn alloc_int_stale(&mut self, n: usize) -> Result<&'a mut [i32], EngineError> {
+        let words = self.alloc_stale(n.div_ceil(2))?;
+        // SAFETY: f64 storage is 8-aligned, initialized and large enough for n i32s.
+        Ok(unsafe { std::slice::from_raw_parts_mut(words.as_mut_ptr() as *mut i32, n) })
     }
 
     /// `n` zeroed ints, taken from the same stack (two per mjtNum).

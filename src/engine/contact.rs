@@ -30,11 +30,11 @@ pub fn instantiate(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineE
     let nv = m.raw.nv as usize;
     let pyramid = super::constraint::is_pyramidal(m);
     let sparse = super::constraint::is_sparse(m);
-    let jac = a.alloc(6 * nv)?;
-    let jacdif = a.alloc(6 * nv)?;
-    let jac1 = a.alloc(6 * nv)?;
-    let jac2 = a.alloc(6 * nv)?;
-    let edges = a.alloc(2 * nv)?;
+    let jac = a.alloc_stale(6 * nv)?;
+    let jacdif = a.alloc_stale(6 * nv)?;
+    let jac1 = a.alloc_stale(6 * nv)?;
+    let jac2 = a.alloc_stale(6 * nv)?;
+    let edges = a.alloc_stale(2 * nv)?;
     let chain = a.alloc_int(nv)?;
     for i in 0..ncon {
         if d.contact[i].exclude != 0 {

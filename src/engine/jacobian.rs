@@ -153,22 +153,27 @@ pub fn full_m(m: &Model, dst: &mut [f64], mat: &[f64]) {
 /// res = M * vec with M in the sparse inertia layout (mj_mulM).
 pub fn mul_m(m: &Model, qm: &[f64], res: &mut [f64], vec: &[f64]) {
     let nv = m.raw.nv as usize;
-    res[..nv].fill(0.0);
+    let (madr, simple, parent) = (m.dof_Madr(), m.dof_simplenum(), m.dof_parentid());
+    let (res, vec) = (&mut res[..nv], &vec[..nv]);
+    res.fill(0.0);
     for i in 0..nv {
-        let mut adr = m.dof_Madr()[i] as usize;
-        if m.dof_simplenum()[i] != 0 {
-            res[i] = qm[adr] * vec[i];
+        let adr = madr[i] as usize;
+        let vi = vec[i];
+        if simple[i] != 0 {
+            res[i] = qm[adr] * vi;
         } else {
-            res[i] += qm[adr] * vec[i];
-            let mut j = m.dof_parentid()[i];
-            adr += 1;
-            while j >= 0 {
+            let mut ri = res[i] + qm[adr] * vi;
+            let mut j = parent[i];
+            for &q in &qm[adr + 1..] {
+                if j < 0 {
+                    break;
+                }
                 let ju = j as usize;
-                res[i] += qm[adr] * vec[ju];
-                res[ju] += qm[adr] * vec[i];
-                j = m.dof_parentid()[ju];
-                adr += 1;
+                ri += q * vec[ju];
+                res[ju] += q * vi;
+                j = parent[ju];
             }
+            res[i] = ri;
         }
     }
 }
@@ -315,8 +320,8 @@ pub fn add_m_sparse_with(
         return Ok(());
     }
     arena.scope(|a| -> Result<(), EngineError> {
-        let mat = a.alloc(nv * nv)?;
-        let mcol = a.alloc_int(nv * nv)?;
+        let mat = a.alloc_stale(nv * nv)?;
+        let mcol = a.alloc_int_stale(nv * nv)?;
         let mnnz = a.alloc_int(nv)?;
         let buf = a.alloc(nv)?;
         let buf_ind = a.alloc_int(nv)?;

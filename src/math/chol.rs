@@ -31,6 +31,7 @@ pub fn chol_factor(mat: &mut [f64], n: usize, mindiag: f64) -> usize {
 
 /// Solves L*L' * x = x in place, given the factor from `chol_factor`.
 pub fn chol_solve_in_place(mat: &[f64], x: &mut [f64], n: usize) {
+    let (mat, x) = (&mat[..n * n], &mut x[..n]);
     for i in 0..n {
         if i > 0 {
             let s = dot(&mat[i * n..], x, i);
@@ -39,10 +40,13 @@ pub fn chol_solve_in_place(mat: &[f64], x: &mut [f64], n: usize) {
         x[i] /= mat[i * (n + 1)];
     }
     for i in (0..n).rev() {
-        for j in i + 1..n {
-            x[i] -= mat[j * n + i] * x[j];
+        // x[i] -= L[j][i] * x[j] for j > i, in increasing j
+        let (head, tail) = x.split_at_mut(i + 1);
+        let mut xi = head[i];
+        for (row, xj) in mat[(i + 1) * n..].chunks_exact(n).zip(tail.iter()) {
+            xi -= row[i] * xj;
         }
-        x[i] /= mat[i * (n + 1)];
+        head[i] = xi / mat[i * (n + 1)];
     }
 }
 
@@ -56,12 +60,14 @@ pub fn chol_solve(res: &mut [f64], mat: &[f64], vec: &[f64], n: usize) {
 /// Returns n minus the number of diagonals clamped to MINVAL.
 pub fn chol_update(mat: &mut [f64], x: &mut [f64], n: usize, flg_plus: bool) -> usize {
     let mut rank = n;
+    let (mat, x) = (&mut mat[..n * n], &mut x[..n]);
     for k in 0..n {
-        if x[k] == 0.0 {
+        let xk = x[k];
+        if xk == 0.0 {
             continue;
         }
         let lkk = mat[k * (n + 1)];
-        let mut t = lkk * lkk + if flg_plus { x[k] * x[k] } else { -x[k] * x[k] };
+        let mut t = lkk * lkk + if flg_plus { xk * xk } else { -xk * xk };
         if t < MINVAL {
             t = MINVAL;
             rank -= 1;
@@ -69,18 +75,25 @@ pub fn chol_update(mat: &mut [f64], x: &mut [f64], n: usize, flg_plus: bool) -> 
         let r = t.sqrt();
         let c = r / lkk;
         let cinv = 1.0 / c;
-        let s = x[k] / lkk;
+        let s = xk / lkk;
         mat[k * (n + 1)] = r;
-        for i in k + 1..n {
-            let m = &mut mat[i * n + k];
-            *m = if flg_plus {
-                (*m + s * x[i]) * cinv
-            } else {
-                (*m - s * x[i]) * cinv
-            };
-        }
-        for i in k + 1..n {
-            x[i] = c * x[i] - s * mat[i * n + k];
+        // column k below the diagonal, then x from the updated column: each row i > k uses
+        // only its own entries, so both passes run row by row
+        let rows = mat[(k + 1) * n..]
+            .chunks_exact_mut(n)
+            .zip(x[k + 1..].iter_mut());
+        if flg_plus {
+            for (row, xi) in rows {
+                let m = (row[k] + s * *xi) * cinv;
+                row[k] = m;
+                *xi = c * *xi - s * m;
+            }
+        } else {
+            for (row, xi) in rows {
+                let m = (row[k] - s * *xi) * cinv;
+                row[k] = m;
+                *xi = c * *xi - s * m;
+            }
         }
     }
     rank
