@@ -2,7 +2,7 @@
 //! X-macro arrays in order, each starting on a 64-byte boundary; the mjData stack apart.
 
 use super::*;
-use crate::capi::errmem::{free, malloc};
+use crate::capi::errmem::{free, malloc, malloc_zeroed};
 use std::os::raw::c_void;
 
 const ALIGN: usize = 64;
@@ -174,7 +174,9 @@ pub fn alloc_data(m: &mjModel) -> Result<*mut mjData, String> {
     let nstack = m.nstack.max(0) as usize;
     let d = malloc(std::mem::size_of::<mjData>()) as *mut mjData;
     let buffer = malloc(nbuffer.max(1));
-    let stack = malloc((nstack * 8).max(1));
+    // zeroed, so that scratch taken from it unzeroed (Arena::alloc_stale) is never uninitialized
+    // memory; calloc's pages stay untouched until the simulation reaches them
+    let stack = malloc_zeroed((nstack * 8).max(1));
     if d.is_null() || buffer.is_null() || stack.is_null() {
         // SAFETY: each is NULL or a fresh allocation.
         unsafe {
@@ -187,9 +189,6 @@ pub fn alloc_data(m: &mjModel) -> Result<*mut mjData, String> {
     // SAFETY: fresh allocations; all-zero bits are a valid mjData header.
     unsafe {
         std::ptr::write_bytes(d as *mut u8, 0, std::mem::size_of::<mjData>());
-        // the stack too: scratch taken from it unzeroed (Arena::alloc_stale) is then never
-        // uninitialized memory
-        std::ptr::write_bytes(stack as *mut u8, 0, nstack * 8);
         (*d).nbuffer = nbuffer as i32;
         (*d).nstack = nstack as i32;
         (*d).buffer = buffer;

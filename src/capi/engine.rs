@@ -958,18 +958,6 @@ pub unsafe extern "C" fn mj_setConst(m: *mut mjModel, d: *mut mjData) {
     guard("mj_setConst", (), || set_const_views(&mut *m, &mut *d))
 }
 
-/// Runs `f` with a temporary mjData made for `m`.
-pub fn with_temp_data(
-    m: &mut mjModel,
-    f: impl FnOnce(&mut mjModel, &mut mjData) -> Result<(), EngineError>,
-) -> Result<(), EngineError> {
-    let d = super::io::new_data(m).map_err(EngineError)?;
-    // SAFETY: d was just made for m and is freed right after.
-    let r = f(m, unsafe { &mut *d });
-    unsafe { alloc::delete_data(d) };
-    r
-}
-
 /// mj_setConst on views of (m, d).
 pub fn set_const_views(m: &mut mjModel, d: &mut mjData) -> Result<(), EngineError> {
     use crate::engine::setconst::{compute, store, subtree_mass};

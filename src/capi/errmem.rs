@@ -232,7 +232,29 @@ pub fn malloc(size: usize) -> *mut c_void {
     ptr
 }
 
-/// Frees memory from `malloc`, through the user deallocator when set.
+/// Allocates zeroed memory: through the user allocator and then cleared, else with `calloc`,
+/// whose large blocks come from fresh pages never touched until used (a model's stack may span
+/// gigabytes the simulation never reaches; 16-byte alignment).
+pub fn malloc_zeroed(size: usize) -> *mut c_void {
+    // SAFETY: C allocation; the result is checked for NULL and cleared to its full size.
+    let ptr = unsafe {
+        let user = mju_user_malloc;
+        if user.is_some() {
+            let p = malloc(size);
+            if !p.is_null() {
+                std::ptr::write_bytes(p as *mut u8, 0, size);
+            }
+            return p;
+        }
+        libc::calloc(size.div_ceil(64).max(1) * 64, 1)
+    };
+    if ptr.is_null() {
+        error("Could not allocate memory");
+    }
+    ptr
+}
+
+/// Frees memory from `malloc` or `malloc_zeroed`, through the user deallocator when set.
 ///
 /// # Safety
 /// `ptr` is NULL or came from `malloc` and was not freed.

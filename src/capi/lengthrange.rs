@@ -98,7 +98,11 @@ pub unsafe fn set_length_range(
 ///
 /// # Safety
 /// `m` must be a valid model, not aliased.
-pub unsafe fn compile_length_ranges(m: *mut mjModel, opt: &mjLROpt) -> Result<(), String> {
+pub unsafe fn compile_length_ranges(
+    m: *mut mjModel,
+    d: *mut mjData,
+    opt: &mjLROpt,
+) -> Result<(), String> {
     let nu = (*m).nu.max(0) as usize;
     let needed = (0..nu).any(|i| {
         matches!(
@@ -119,13 +123,6 @@ pub unsafe fn compile_length_ranges(m: *mut mjModel, opt: &mjLROpt) -> Result<()
     if opt.timestep > 0.0 {
         (*m).opt.timestep = opt.timestep;
     }
-    let d = match crate::abi::alloc::alloc_data(&*m) {
-        Ok(d) => d,
-        Err(_) => {
-            (*m).opt = saved;
-            return Err("could not create mjData".into());
-        }
-    };
     let mut result = Ok(());
     for i in 0..nu {
         match set_length_range(m, d, i, opt) {
@@ -140,7 +137,6 @@ pub unsafe fn compile_length_ranges(m: *mut mjModel, opt: &mjLROpt) -> Result<()
             }
         }
     }
-    crate::abi::alloc::delete_data(d);
     (*m).opt = saved;
     result
 }

@@ -112,15 +112,11 @@ unsafe extern "C" fn keep_error(msg: *const c_char) {
 /// simulation, singular inertia) reach the error buffer, and an engine error rejects the model
 /// (Err: the message). A feature this engine lacks ("not implemented") does not stop a model
 /// from loading: the user meets it at the first mj_step.
-unsafe fn test_step(m: *mut mjModel) -> Result<(), String> {
+unsafe fn test_step(m: *mut mjModel, d: *mut mjData) -> Result<(), String> {
     let saved = errmem::_mjPRIVATE__get_tls_error_fn();
     errmem::_mjPRIVATE__set_tls_error_fn(Some(keep_error));
-    let d = crate::capi::io::mj_makeData(m);
-    if !d.is_null() {
-        crate::capi::io::mj_resetData(m, d);
-        crate::capi::engine::mj_step(m, d);
-        crate::capi::io::mj_deleteData(d);
-    }
+    crate::capi::io::mj_resetData(m, d);
+    crate::capi::engine::mj_step(m, d);
     errmem::_mjPRIVATE__set_tls_error_fn(saved);
     let error = STEP_ERROR.with(|w| std::mem::take(&mut *w.borrow_mut()));
     if error.is_empty() || error.contains("not implemented") {
@@ -128,6 +124,33 @@ unsafe fn test_step(m: *mut mjModel) -> Result<(), String> {
     } else {
         Err(error)
     }
+}
+
+/// The compiler's steps that run the engine on `d`: constants, spring-dampers, length ranges,
+/// statistics overrides, reference checks and the test step.
+///
+/// # Safety
+/// `m` is a valid model, not aliased; `d` was made for it.
+unsafe fn finish_compile(
+    m: *mut mjModel,
+    d: *mut mjData,
+    compiled: &compiler::Compiled,
+) -> Result<(), String> {
+    crate::engine::setconst::set_const_with(&mut *m, &mut *d)
+        .map_err(|e| format!("Error: engine error: {e}"))?;
+    {
+        // SAFETY: no other view of m is alive.
+        let mut mm = ModelMut::new(&mut *m);
+        compiler::auto_spring_damper(compiled, &mut mm);
+    }
+    crate::capi::lengthrange::compile_length_ranges(m, d, &compiled.lropt)
+        .map_err(|e| format!("Error: {e}"))?;
+    compiler::finish(compiled, &mut (*m).stat);
+    if let Some(msg) = crate::abi::validate::validate_references(crate::abi::view::Model::new(&*m))
+    {
+        return Err(format!("Error: {msg}"));
+    }
+    test_step(m, d).map_err(|e| format!("Error: engine error: {e}"))
 }
 
 /// Parses, compiles and allocates; returns the model or the error text.
@@ -154,37 +177,19 @@ unsafe fn load(filename: *const c_char, vfs: *const mjVFS) -> Result<*mut mjMode
         let mut mm = ModelMut::new(&mut *m);
         compiler::fill(&compiled, &mut mm);
     }
-    // 2.2.2 allocates the model's mjData before mj_setConst and fails the load if it cannot
-    match crate::abi::alloc::alloc_data(&*m) {
-        Ok(d) => crate::abi::alloc::delete_data(d),
+    // as 2.2.2's compiler: one mjData serves mj_setConst, the length ranges and the test step
+    let d = match crate::capi::io::new_data(&*m) {
+        Ok(d) => d,
         Err(_) => {
             crate::abi::alloc::delete_model(m);
             return Err("Error: could not create mjData".into());
         }
-    }
-    if let Err(e) = compiler::set_const(&mut *m) {
+    };
+    let finished = finish_compile(m, d, &compiled);
+    crate::abi::alloc::delete_data(d);
+    if let Err(e) = finished {
         crate::abi::alloc::delete_model(m);
-        return Err(format!("Error: engine error: {e}"));
-    }
-    {
-        // SAFETY: as above; no other view of m is alive.
-        let mut mm = ModelMut::new(&mut *m);
-        compiler::auto_spring_damper(&compiled, &mut mm);
-    }
-    if let Err(e) = crate::capi::lengthrange::compile_length_ranges(m, &compiled.lropt) {
-        crate::abi::alloc::delete_model(m);
-        return Err(format!("Error: {e}"));
-    }
-    compiler::finish(&compiled, &mut (*m).stat);
-    // SAFETY: m came from make_model.
-    if let Some(msg) = crate::abi::validate::validate_references(crate::abi::view::Model::new(&*m))
-    {
-        crate::abi::alloc::delete_model(m);
-        return Err(format!("Error: {msg}"));
-    }
-    if let Err(e) = test_step(m) {
-        crate::abi::alloc::delete_model(m);
-        return Err(format!("Error: engine error: {e}"));
+        return Err(e);
     }
     if let Ok(mut last) = LAST_MODEL.lock() {
         *last = Some(LastModel {

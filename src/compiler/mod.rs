@@ -1,7 +1,7 @@
 //! Model description to `mjModel`: object compilation, sizes, array filling.
 //!
 //! `compile` does all work that needs no engine; `fill` writes the arrays of a model allocated
-//! with the sizes it found; `set_const` runs the engine's qpos0-dependent constants.
+//! with the sizes it found; the loader then runs the engine's qpos0-dependent constants (mj_setConst).
 
 pub mod composite;
 mod composite_skin;
@@ -18,7 +18,7 @@ mod tests;
 pub mod texture;
 mod tree;
 
-use crate::abi::view::{EngineError, ModelMut};
+use crate::abi::view::ModelMut;
 use crate::abi::{mjModel, mjStatistic};
 pub use tree::Compiled;
 
@@ -67,18 +67,13 @@ pub fn fill(c: &Compiled, m: &mut ModelMut) {
     c.fill(m);
 }
 
-/// Constants that depend on qpos0 (mj_setConst), computed by the engine.
-pub fn set_const(m: &mut mjModel) -> Result<(), EngineError> {
-    crate::engine::setconst::set_const(m)
-}
-
 /// Joint stiffness and damping from `springdamper` (time constant, damping ratio), using the
-/// inverse weights `set_const` computed.
+/// inverse weights mj_setConst computed.
 pub fn auto_spring_damper(c: &Compiled, m: &mut ModelMut) {
     c.auto_spring_damper(m);
 }
 
-/// Applies the user's `<statistic>` overrides after `set_const`.
+/// Applies the user's `<statistic>` overrides after mj_setConst.
 pub fn finish(c: &Compiled, stat: &mut mjStatistic) {
     let o = &c.stat_override;
     let set = |dst: &mut f64, v: f64| {

@@ -12,11 +12,6 @@ use crate::abi::view::ModelMut;
 use crate::abi::*;
 use crate::math::*;
 
-/// Fills the qpos0-dependent constants of a compiled model, using a temporary mjData.
-pub fn set_const(m: &mut mjModel) -> Result<(), EngineError> {
-    crate::capi::engine::with_temp_data(m, set_const_with)
-}
-
 /// Subtree masses (written first: everything else reads only the model's inputs).
 pub fn subtree_mass(mm: &mut ModelMut, nbody: usize) {
     for i in 0..nbody {
