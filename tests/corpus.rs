@@ -18,36 +18,37 @@ fn corpus_compiled_models() {
     let bin = harness_bin();
     let files = corpus_files();
     let base = work_dir("corpus");
-    let (mut same, mut differ, mut rejected) = (Vec::new(), Vec::new(), 0);
-    for (i, f) in files.iter().enumerate() {
+    // per model: None when the reference rejects it, else (identical, path, first line)
+    let results = par_map(&files, |i, f| {
         let dir = base.join(i.to_string());
         let _ = std::fs::remove_dir_all(&dir);
         let (fs, ds) = (
             f.to_string_lossy().to_string(),
             dir.to_string_lossy().to_string(),
         );
-        let Some((ok, out)) = harness_compare(
+        let (ok, out) = harness_compare(
             &bin,
             &fs,
             &ds,
             &["--model-only"],
             &["--groups", "model"],
             120,
-        ) else {
-            rejected += 1; // include files and deliberately malformed models
-            continue;
-        };
+        )?; // None: include files and deliberately malformed models
         let rel = dirs
             .iter()
             .find_map(|d| f.strip_prefix(d.parent().unwrap_or(d)).ok())
             .unwrap_or(f)
             .display()
             .to_string();
-        if ok {
-            same.push(rel);
-        } else {
-            let why = out.lines().next().unwrap_or("").trim().to_string();
-            differ.push(format!("{rel}: {why}"));
+        let why = out.lines().next().unwrap_or("").trim().to_string();
+        Some((ok, rel, why))
+    });
+    let (mut same, mut differ, mut rejected) = (Vec::new(), Vec::new(), 0);
+    for r in results {
+        match r {
+            None => rejected += 1,
+            Some((true, rel, _)) => same.push(rel),
+            Some((false, rel, why)) => differ.push(format!("{rel}: {why}")),
         }
     }
     let msg = format!(

@@ -21,21 +21,21 @@ fn results() -> &'static (PathBuf, PathBuf) {
     RESULTS.get_or_init(|| {
         let bin = harness_bin();
         let base = work_dir("diff");
-        for model in models() {
-            let dir = base.join(stem(&model));
+        par_map(&models(), |_, model| {
+            let dir = base.join(stem(model));
             let _ = std::fs::remove_dir_all(&dir);
             let d = dir.to_string_lossy().to_string();
-            let r = run(&bin.join("harness-ref"), &["record", &model, &d], &[], 300);
+            let r = run(&bin.join("harness-ref"), &["record", model, &d], &[], 300);
             assert!(
                 r.status.success(),
                 "reference run failed on {model}:\n{}{}",
                 text(&r.stdout),
                 text(&r.stderr)
             );
-            run(&bin.join("harness-ours"), &["replay", &model, &d], &[], 300);
+            run(&bin.join("harness-ours"), &["replay", model, &d], &[], 300);
             let full = run(&bin.join("harness-ref"), &["compare", &d, "-v"], &[], 120);
             std::fs::write(dir.join("report.txt"), &full.stdout).unwrap();
-        }
+        });
         let summary: String = models()
             .iter()
             .map(|m| {

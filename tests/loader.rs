@@ -1,4 +1,4 @@
-//! The MJCF loader under hostile input, and its speed: mutated copies of real models (attribute
+//! The MJCF loader under hostile input: mutated copies of real models (attribute
 //! values such as nan, inf, 1e308, -1, empty or wrong counts; dropped and duplicated elements;
 //! flipped bytes; truncation) must get the reference's verdict: load or reject, never a crash
 //! or a hang, never a model the reference rejects. A model we cannot compile yet may only be
@@ -130,53 +130,13 @@ fn mirror(seed: &Path, dir: &Path) {
     }
 }
 
-fn verdicts(prog: &Path, files: &[String]) -> Vec<String> {
-    let mut out = Vec::new();
-    for chunk in files.chunks(200) {
-        let args: Vec<&str> = std::iter::once("verdict")
-            .chain(chunk.iter().map(String::as_str))
-            .collect();
-        let o = run(prog, &args, &[], 3600);
-        let t = text(&o.stdout);
-        let lines: Vec<String> = t.lines().map(str::to_string).collect();
-        assert_eq!(
-            lines.len(),
-            chunk.len(),
-            "loader verdict output incomplete:\n{t}{}",
-            text(&o.stderr)
-        );
-        out.extend(lines);
-    }
-    out
-}
-
 fn unsupported(msg: &str) -> bool {
     msg.contains("not supported") || msg.contains("not implemented")
 }
 
-/// The seed models both libraries load (verdict "load ..." on each).
-fn seeds(reference: &Path, ours: &Path) -> Vec<String> {
-    let mut files = corpus_files();
-    xml_files(&root().join("models"), &mut files);
-    let files: Vec<String> = files
-        .iter()
-        .map(|p| p.to_string_lossy().into_owned())
-        .collect();
-    let (r, o) = (verdicts(reference, &files), verdicts(ours, &files));
-    files
-        .into_iter()
-        .zip(r.iter().zip(&o))
-        .filter(|(_, (r, o))| r.starts_with("load") && r == o)
-        .map(|(f, _)| f)
-        .collect()
-}
-
 #[test]
 fn mutated_models_get_the_reference_verdict() {
-    let src = [root().join("capi-tests/loader.c")];
-    let reference = compile_c(&src, "loader", Lib::Ref);
-    let ours = compile_c(&src, "loader", Lib::Ours);
-    let seeds = seeds(&reference, &ours);
+    let (reference, ours, seeds) = loaders();
     assert!(!seeds.is_empty(), "no seed model loads in both libraries");
     let count = if corpus_dirs().is_empty() { 300 } else { 1000 };
     let base = work_dir("mutants");
@@ -194,7 +154,7 @@ fn mutated_models_get_the_reference_verdict() {
         std::fs::write(&file, mutate(&text, &mut rng)).unwrap();
         files.push(file.to_string_lossy().into_owned());
     }
-    let (r, o) = (verdicts(&reference, &files), verdicts(&ours, &files));
+    let (r, o) = both_verdicts(reference, ours, &files);
     let (mut same, mut same_msg, mut unsup, mut ref_bad) = (0, 0, 0, 0);
     let mut wrong = Vec::new();
     for (f, (r, o)) in files.iter().zip(r.iter().zip(&o)) {
@@ -316,11 +276,10 @@ fn mesh_files(xml: &str, dir: &Path) -> Vec<(String, std::path::PathBuf)> {
 
 #[test]
 fn mutated_mesh_files_get_the_reference_verdict() {
-    let src = [root().join("capi-tests/loader.c")];
-    let reference = compile_c(&src, "loader-mesh", Lib::Ref);
-    let ours = compile_c(&src, "loader-mesh", Lib::Ours);
-    let seeds: Vec<(String, Vec<(String, std::path::PathBuf)>)> = seeds(&reference, &ours)
-        .into_iter()
+    let (reference, ours, seeds) = loaders();
+    let seeds: Vec<(String, Vec<(String, std::path::PathBuf)>)> = seeds
+        .iter()
+        .cloned()
         .filter_map(|f| {
             let xml = std::fs::read_to_string(&f).ok()?;
             let meshes = mesh_files(&xml, Path::new(&f).parent()?);
@@ -356,7 +315,7 @@ fn mutated_mesh_files_get_the_reference_verdict() {
         std::fs::write(&file, xml).unwrap();
         files.push(file.to_string_lossy().into_owned());
     }
-    let (r, o) = (verdicts(&reference, &files), verdicts(&ours, &files));
+    let (r, o) = both_verdicts(reference, ours, &files);
     let (mut same, mut same_msg, mut loads, mut ref_bad) = (0, 0, 0, 0);
     let mut wrong = Vec::new();
     for (f, (r, o)) in files.iter().zip(r.iter().zip(&o)) {
@@ -387,35 +346,4 @@ fn mutated_mesh_files_get_the_reference_verdict() {
     );
     report("mesh-mutants", &msg);
     assert!(wrong.is_empty(), "{msg}");
-}
-
-#[test]
-fn loading_speed() {
-    let src = [root().join("capi-tests/loader.c")];
-    let reference = compile_c(&src, "loader-speed", Lib::Ref);
-    let ours = compile_c(&src, "loader-speed", Lib::Ours);
-    let seeds = seeds(&reference, &ours);
-    let mut args = vec!["time".to_string(), "3".to_string()];
-    args.extend(seeds.iter().cloned());
-    let args: Vec<&str> = args.iter().map(String::as_str).collect();
-    let time = |prog: &Path| -> f64 {
-        let o = run(prog, &args, &[], 600);
-        assert!(o.status.success(), "{}", text(&o.stderr));
-        text(&o.stdout).trim().parse().unwrap()
-    };
-    // best of 3, alternating
-    let (mut tr, mut to) = (f64::INFINITY, f64::INFINITY);
-    for _ in 0..3 {
-        tr = tr.min(time(&reference));
-        to = to.min(time(&ours));
-    }
-    let msg = format!(
-        "loading speed: {} models x 3 loads: reference {:.3} s, ours {:.3} s, ratio (ours faster by) {:.2}x\n",
-        seeds.len(),
-        tr,
-        to,
-        tr / to
-    );
-    report("loading-speed", &msg);
-    assert!(to > 0.0 && tr > 0.0, "{msg}");
 }

@@ -12,6 +12,69 @@ use common::*;
 /// nv 2700, stays in; the 1000-particle composite, nv 3000, with its contacts, does not).
 const MAX_NV: i32 = 2700;
 
+/// What one model gave.
+enum Outcome {
+    Skipped,
+    Unsupported(String),
+    /// smooth-dynamics parity, then the full-physics result: worst error, or what differs
+    Checked {
+        smooth: Result<bool, String>,
+        full: Result<f64, String>,
+    },
+}
+
+fn check(bin: &std::path::Path, f: &std::path::Path, dir: &std::path::Path) -> Outcome {
+    let _ = std::fs::remove_dir_all(dir);
+    let (fs, ds) = (
+        f.to_string_lossy().to_string(),
+        dir.to_string_lossy().to_string(),
+    );
+    let rel = f.display().to_string();
+    // the compiled model first: small, tells the size and whether ours loads it
+    match harness_compare(
+        bin,
+        &fs,
+        &ds,
+        &["--model-only"],
+        &["--groups", "model"],
+        120,
+    ) {
+        None => return Outcome::Skipped,
+        Some((false, _)) => return Outcome::Unsupported(format!("{rel}: compiler")),
+        Some((true, _)) => {}
+    }
+    if model_nv(&ds) > MAX_NV {
+        return Outcome::Skipped;
+    }
+    // smooth dynamics: constraints and contacts off on both sides
+    let g = ["--groups", "forward,jacBody,jacSite"];
+    let smooth_run = ["--groups", "forward,jacBody,jacSite", "--disable", "3"];
+    let smooth = match harness_compare(bin, &fs, &ds, &smooth_run, &g, 600) {
+        Some((true, _)) => Ok(true),
+        Some((false, out)) if !out.contains("not implemented") => {
+            Err(format!("{rel} (constraints and contacts disabled):\n{out}"))
+        }
+        _ => Ok(false),
+    };
+    let g = ["--groups", "forward,step,collision"];
+    let Some((ok, out)) = harness_compare(bin, &fs, &ds, &g, &g, 600) else {
+        return Outcome::Skipped; // the reference stops on this model
+    };
+    let _ = std::fs::remove_dir_all(dir);
+    let full = if ok {
+        Ok(out
+            .lines()
+            .filter_map(|l| l.split("check groups pass; worst relative error ").nth(1))
+            .filter_map(|w| w.split_whitespace().next()?.parse::<f64>().ok())
+            .fold(0.0, f64::max))
+    } else if out.contains("not implemented") {
+        return Outcome::Unsupported(format!("{rel}: not implemented"));
+    } else {
+        Err(format!("{rel}:\n{out}"))
+    };
+    Outcome::Checked { smooth, full }
+}
+
 #[test]
 fn corpus_physics() {
     let files = corpus_files();
@@ -21,87 +84,37 @@ fn corpus_physics() {
     }
     let bin = harness_bin();
     let base = work_dir("physics-corpus");
-    let (mut same, mut unsupported, mut skipped) = (Vec::new(), Vec::new(), 0);
+    let outcomes = par_map(&files, |i, f| check(&bin, f, &base.join(i.to_string())));
+    let (mut same, mut unsupported, mut skipped) = (0, Vec::new(), 0);
     let mut differ = Vec::new();
     let mut worst = 0.0f64;
     let mut smooth = 0;
-    for (i, f) in files.iter().enumerate() {
-        let dir = base.join(i.to_string());
-        let _ = std::fs::remove_dir_all(&dir);
-        let (fs, ds) = (
-            f.to_string_lossy().to_string(),
-            dir.to_string_lossy().to_string(),
-        );
-        // the compiled model first: small, tells the size and whether ours loads it
-        let rel = f.display().to_string();
-        match harness_compare(
-            &bin,
-            &fs,
-            &ds,
-            &["--model-only"],
-            &["--groups", "model"],
-            120,
-        ) {
-            None => {
-                skipped += 1;
-                continue;
-            }
-            Some((false, _)) => {
-                unsupported.push(format!("{rel}: compiler"));
-                continue;
-            }
-            Some((true, _)) => {}
-        }
-        if model_nv(&ds) > MAX_NV {
-            skipped += 1;
-            continue;
-        }
-        // smooth dynamics: constraints and contacts off on both sides
-        let g = ["--groups", "forward,jacBody,jacSite"];
-        let smooth_run = ["--groups", "forward,jacBody,jacSite", "--disable", "3"];
-        match harness_compare(&bin, &fs, &ds, &smooth_run, &g, 600) {
-            Some((true, _)) => smooth += 1,
-            Some((false, out)) if !out.contains("not implemented") => {
-                differ.push(format!("{rel} (constraints and contacts disabled):\n{out}"))
-            }
-            _ => {}
-        }
-        let groups = "forward,step,collision";
-        let g = ["--groups", groups];
-        let Some((ok, out)) = harness_compare(&bin, &fs, &ds, &g, &g, 600) else {
-            skipped += 1; // the reference stops on this model
-            continue;
-        };
-        let _ = std::fs::remove_dir_all(&dir);
-        if ok {
-            for l in out
-                .lines()
-                .filter(|l| l.contains("check groups pass; worst"))
-            {
-                if let Some(w) = l.split("worst relative error ").nth(1) {
-                    let w: f64 = w
-                        .split_whitespace()
-                        .next()
-                        .unwrap_or("0")
-                        .parse()
-                        .unwrap_or(0.0);
-                    worst = worst.max(w);
+    for o in outcomes {
+        match o {
+            Outcome::Skipped => skipped += 1,
+            Outcome::Unsupported(u) => unsupported.push(u),
+            Outcome::Checked { smooth: s, full } => {
+                match s {
+                    Ok(true) => smooth += 1,
+                    Ok(false) => {}
+                    Err(d) => differ.push(d),
+                }
+                match full {
+                    Ok(w) => {
+                        worst = worst.max(w);
+                        same += 1;
+                    }
+                    Err(d) => differ.push(d),
                 }
             }
-            same.push(rel);
-        } else if out.contains("not implemented") {
-            unsupported.push(format!("{rel}: not implemented"));
-        } else {
-            differ.push(format!("{rel}:\n{out}"));
         }
     }
     let msg = format!(
-        "physics corpus (forward, step, collision at 50 states): {} of {} models at parity \
+        "physics corpus (forward, step, collision at 50 states): {same} of {} models at parity \
          (worst relative error {worst:.2e}); {} stop on features not supported yet; {} differ; \
          {skipped} skipped (reference rejects or stops, or nv > {MAX_NV}); with constraints and \
          contacts disabled, forward and Jacobians at parity on {smooth}\n{}{}",
-        same.len(),
-        same.len() + unsupported.len() + differ.len(),
+        same + unsupported.len() + differ.len(),
         unsupported.len(),
         differ.len(),
         unsupported

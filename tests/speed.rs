@@ -2,12 +2,16 @@
 //! the models the issues name, with constraints and contacts disabled (smooth dynamics) and
 //! with full physics. Reports ratios (target/capi-tests/reports/speed.txt); a model our engine
 //! cannot run yet is reported as such. Fails only if a run breaks in an unexpected way.
+//! Also loading speed (loading-speed.txt): every model both libraries load, once a run.
 
 mod common;
 use common::*;
 use std::path::{Path, PathBuf};
 
 const STEPS: &str = "2000";
+
+/// Held by each measurement, so that the two never share the cores.
+static QUIET: std::sync::Mutex<()> = std::sync::Mutex::new(());
 /// mjDSBL_CONSTRAINT | mjDSBL_CONTACT
 const SMOOTH: &str = "3";
 
@@ -34,6 +38,7 @@ fn rate(prog: &Path, flags: &str, model: &Path) -> Result<f64, String> {
 
 #[test]
 fn speed_against_the_reference() {
+    let _quiet = QUIET.lock();
     let src = [root().join("capi-tests/bench.c")];
     let reference = compile_c(&src, "bench", Lib::Ref);
     let ours = compile_c(&src, "bench", Lib::Ours);
@@ -86,4 +91,34 @@ fn speed_against_the_reference() {
     );
     report("speed", &msg);
     eprintln!("{msg}");
+}
+
+/// Loading speed: every corpus and project model both libraries load, each once a run.
+#[test]
+fn loading_speed() {
+    let _quiet = QUIET.lock();
+    let (reference, ours, seeds) = loaders();
+    let mut args = vec!["time".to_string(), "1".to_string()];
+    args.extend(seeds.iter().cloned());
+    let args: Vec<&str> = args.iter().map(String::as_str).collect();
+    let time = |prog: &Path| -> f64 {
+        let o = run(prog, &args, &[], 600);
+        assert!(o.status.success(), "{}", text(&o.stderr));
+        text(&o.stdout).trim().parse().unwrap()
+    };
+    // best of 3, alternating
+    let (mut tr, mut to) = (f64::INFINITY, f64::INFINITY);
+    for _ in 0..3 {
+        tr = tr.min(time(reference));
+        to = to.min(time(ours));
+    }
+    let msg = format!(
+        "loading speed: {} models, best of 3: reference {:.3} s, ours {:.3} s, ratio (ours faster by) {:.2}x\n",
+        seeds.len(),
+        tr,
+        to,
+        tr / to
+    );
+    report("loading-speed", &msg);
+    assert!(to > 0.0 && tr > 0.0, "{msg}");
 }

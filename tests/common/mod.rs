@@ -257,3 +257,94 @@ pub fn harness_compare(
     let c = run(&bin.join("harness-ref"), &cmp, &[], seconds);
     Some((c.status.success(), text(&c.stdout)))
 }
+
+/// Workers for per-model loops: $RUJOCO_TEST_JOBS, else the machine's cores.
+pub fn jobs() -> usize {
+    std::env::var("RUJOCO_TEST_JOBS")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
+        .max(1)
+}
+
+/// `f` over `items` on `jobs()` threads; results in the items' order.
+pub fn par_map<T: Sync, R: Send>(items: &[T], f: impl Fn(usize, &T) -> R + Sync) -> Vec<R> {
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    use std::sync::Mutex;
+    let next = AtomicUsize::new(0);
+    let out: Mutex<Vec<Option<R>>> = Mutex::new((0..items.len()).map(|_| None).collect());
+    std::thread::scope(|s| {
+        for _ in 0..jobs().min(items.len()) {
+            s.spawn(|| loop {
+                let i = next.fetch_add(1, Ordering::Relaxed);
+                let Some(item) = items.get(i) else { break };
+                let r = f(i, item);
+                out.lock().unwrap()[i] = Some(r);
+            });
+        }
+    });
+    out.into_inner()
+        .unwrap()
+        .into_iter()
+        .map(|r| r.expect("every item mapped"))
+        .collect()
+}
+
+/// `capi-tests/loader.c` built on each library: `verdict FILE...` prints one line a file.
+pub fn verdicts(prog: &Path, files: &[String]) -> Vec<String> {
+    let mut out = Vec::new();
+    for chunk in files.chunks(200) {
+        let args: Vec<&str> = std::iter::once("verdict")
+            .chain(chunk.iter().map(String::as_str))
+            .collect();
+        let o = run(prog, &args, &[], 3600);
+        let t = text(&o.stdout);
+        let lines: Vec<String> = t.lines().map(str::to_string).collect();
+        assert_eq!(
+            lines.len(),
+            chunk.len(),
+            "loader verdict output incomplete:\n{t}{}",
+            text(&o.stderr)
+        );
+        out.extend(lines);
+    }
+    out
+}
+
+/// Verdicts of both libraries, run side by side.
+pub fn both_verdicts(
+    reference: &Path,
+    ours: &Path,
+    files: &[String],
+) -> (Vec<String>, Vec<String>) {
+    std::thread::scope(|s| {
+        let r = s.spawn(|| verdicts(reference, files));
+        (r.join().unwrap(), verdicts(ours, files))
+    })
+}
+
+/// The loader program on each library and the corpus and project models both load (computed
+/// once per test binary).
+pub fn loaders() -> &'static (PathBuf, PathBuf, Vec<String>) {
+    static LOADERS: std::sync::OnceLock<(PathBuf, PathBuf, Vec<String>)> =
+        std::sync::OnceLock::new();
+    LOADERS.get_or_init(|| {
+        let src = [root().join("capi-tests/loader.c")];
+        let reference = compile_c(&src, "loader", Lib::Ref);
+        let ours = compile_c(&src, "loader", Lib::Ours);
+        let mut files = corpus_files();
+        xml_files(&root().join("models"), &mut files);
+        let files: Vec<String> = files
+            .iter()
+            .map(|p| p.to_string_lossy().into_owned())
+            .collect();
+        let (r, o) = both_verdicts(&reference, &ours, &files);
+        let seeds = files
+            .into_iter()
+            .zip(r.iter().zip(&o))
+            .filter(|(_, (r, o))| r.starts_with("load") && r == o)
+            .map(|(f, _)| f)
+            .collect();
+        (reference, ours, seeds)
+    })
+}
