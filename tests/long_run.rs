@@ -1,7 +1,8 @@
 //! 10,000-step runs: no NaN and no warning the reference does not also give, no crash, no hang.
 //! Models: capi-tests/models.list (must match), then the models of models-extra.list and the
-//! corpus (when present) that both libraries load: a run our engine stops with "not
-//! implemented" is counted as not supported yet, anything else must match the reference.
+//! main corpus (../shared/corpus or the dm_control suite, when present) that both libraries
+//! load: a run our engine stops with "not implemented" is counted as not supported yet,
+//! anything else must match the reference.
 
 mod common;
 use common::*;
@@ -9,8 +10,10 @@ use std::path::Path;
 
 const STEPS: &str = "10000";
 
+/// The main corpus (common::main_corpus_files): the other packages' models get the physics
+/// corpus checks along 1000-step trajectories (tests/physics_corpus.rs).
 fn corpus_models() -> Vec<String> {
-    corpus_files()
+    main_corpus_files()
         .iter()
         .map(|p| p.to_string_lossy().into_owned())
         .collect()

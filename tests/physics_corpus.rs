@@ -1,7 +1,8 @@
 //! Physics over the corpus (common::corpus_dirs), for every model both libraries load: full
 //! physics (mj_forward, mj_step and collision detection at 50 states of the reference's
-//! trajectory: harness groups forward, step, collision), and smooth dynamics with constraints
-//! and contacts disabled on both sides (forward and the body Jacobians), compared within the
+//! trajectory: harness groups forward, step, collision), and, on the main corpus, smooth
+//! dynamics with constraints and contacts disabled on both sides (forward and the body
+//! Jacobians), compared within the
 //! group tolerances raised to 1000x the reference's noise floor. A model our engine stops on
 //! with "not implemented" is counted, never one that differs. Report: physics-corpus.txt.
 
@@ -23,7 +24,13 @@ enum Outcome {
     },
 }
 
-fn check(bin: &std::path::Path, f: &std::path::Path, dir: &std::path::Path) -> Outcome {
+/// `smooth`: also the run with constraints and contacts disabled.
+fn check(
+    bin: &std::path::Path,
+    f: &std::path::Path,
+    dir: &std::path::Path,
+    smooth: bool,
+) -> Outcome {
     let _ = std::fs::remove_dir_all(dir);
     let (fs, ds) = (
         f.to_string_lossy().to_string(),
@@ -49,9 +56,10 @@ fn check(bin: &std::path::Path, f: &std::path::Path, dir: &std::path::Path) -> O
     // smooth dynamics: constraints and contacts off on both sides
     let g = ["--groups", "forward,jacBody,jacSite"];
     let smooth_run = ["--groups", "forward,jacBody,jacSite", "--disable", "3"];
-    let smooth = match harness_compare(bin, &fs, &ds, &smooth_run, &g, 600) {
-        Some((true, _)) => Ok(true),
-        Some((false, out)) if !out.contains("not implemented") => {
+    let smooth = match smooth.then(|| harness_compare(bin, &fs, &ds, &smooth_run, &g, 600)) {
+        None => Ok(false),
+        Some(Some((true, _))) => Ok(true),
+        Some(Some((false, out))) if !out.contains("not implemented") => {
             Err(format!("{rel} (constraints and contacts disabled):\n{out}"))
         }
         _ => Ok(false),
@@ -84,7 +92,10 @@ fn corpus_physics() {
     }
     let bin = harness_bin();
     let base = work_dir("physics-corpus");
-    let outcomes = par_map(&files, |i, f| check(&bin, f, &base.join(i.to_string())));
+    let main = main_corpus_files();
+    let outcomes = par_map(&files, |i, f| {
+        check(&bin, f, &base.join(i.to_string()), main.contains(f))
+    });
     let (mut same, mut unsupported, mut skipped) = (0, Vec::new(), 0);
     let mut differ = Vec::new();
     let mut worst = 0.0f64;
@@ -113,7 +124,7 @@ fn corpus_physics() {
         "physics corpus (forward, step, collision at 50 states): {same} of {} models at parity \
          (worst relative error {worst:.2e}); {} stop on features not supported yet; {} differ; \
          {skipped} skipped (reference rejects or stops, or nv > {MAX_NV}); with constraints and \
-         contacts disabled, forward and Jacobians at parity on {smooth}\n{}{}",
+         contacts disabled (main corpus), forward and Jacobians at parity on {smooth}\n{}{}",
         same + unsupported.len() + differ.len(),
         unsupported.len(),
         differ.len(),

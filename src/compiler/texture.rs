@@ -5,27 +5,31 @@ use super::spec::Texture;
 /// The C library's `rand()` after `srand(seed)` (glibc's additive feedback generator), which
 /// 2.2.2 seeds with 123 before compiling so random texture marks are reproducible.
 pub struct CRand {
-    r: Vec<u32>,
+    /// The last 32 outputs of the additive feedback r[i] = r[i-31] + r[i-3], at i mod 32.
+    r: [u32; 32],
     i: usize,
 }
 
 impl CRand {
     pub fn new(seed: u32) -> Self {
-        let mut r = vec![0u32; 34];
-        r[0] = if seed == 0 { 1 } else { seed };
+        let mut init = [0u32; 34];
+        init[0] = if seed == 0 { 1 } else { seed };
         for i in 1..31 {
-            let prev = r[i - 1] as i32 as i64;
+            let prev = init[i - 1] as i32 as i64;
             let (hi, lo) = (prev / 127773, prev % 127773);
             let mut word = 16807 * lo - 2836 * hi;
             if word < 0 {
                 word += 2147483647;
             }
-            r[i] = word as u32;
+            init[i] = word as u32;
         }
         for i in 31..34 {
-            r[i] = r[i - 31];
+            init[i] = init[i - 31];
         }
-        let mut g = CRand { r, i: 34 };
+        let mut g = CRand { r: [0; 32], i: 34 };
+        for (k, &v) in init.iter().enumerate().skip(2) {
+            g.r[k % 32] = v;
+        }
         for _ in 34..344 {
             g.step();
         }
@@ -33,13 +37,10 @@ impl CRand {
     }
 
     fn step(&mut self) -> u32 {
-        let v = self.r[self.i - 31].wrapping_add(self.r[self.i - 3]);
-        self.r.push(v);
-        self.i += 1;
-        if self.r.len() > 4096 {
-            self.r.drain(..self.r.len() - 64);
-            self.i = self.r.len();
-        }
+        let i = self.i;
+        let v = self.r[(i - 31) % 32].wrapping_add(self.r[(i - 3) % 32]);
+        self.r[i % 32] = v;
+        self.i = i + 1;
         v
     }
 

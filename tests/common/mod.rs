@@ -217,6 +217,16 @@ pub fn xml_files(dir: &Path, out: &mut Vec<PathBuf>) {
     }
 }
 
+/// The .xml files of the first corpus directory: the corpus the issues name (../shared/corpus,
+/// or the dm_control suite where it is absent), without the other packages run-all fetches.
+pub fn main_corpus_files() -> Vec<PathBuf> {
+    let mut out = Vec::new();
+    if let Some(d) = corpus_dirs().first() {
+        xml_files(d, &mut out);
+    }
+    out
+}
+
 /// Every .xml file of the corpus directories.
 pub fn corpus_files() -> Vec<PathBuf> {
     let mut out = Vec::new();
