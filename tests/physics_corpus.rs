@@ -55,7 +55,7 @@ fn check(
     }
     // smooth dynamics: constraints and contacts off on both sides
     let g = ["--groups", "forward,jacBody,jacSite"];
-    let smooth_run = ["--groups", "forward,jacBody,jacSite", "--disable", "3"];
+    let smooth_run = ["--groups", "forward,jacBody,jacSite", "--disable", "17"];
     let smooth = match smooth.then(|| harness_compare(bin, &fs, &ds, &smooth_run, &g, 600)) {
         None => Ok(false),
         Some(Some((true, _))) => Ok(true),

@@ -13,7 +13,7 @@ const STEPS: &str = "2000";
 /// Held by each measurement, so that the two never share the cores.
 static QUIET: std::sync::Mutex<()> = std::sync::Mutex::new(());
 /// mjDSBL_CONSTRAINT | mjDSBL_CONTACT
-const SMOOTH: &str = "3";
+const SMOOTH: &str = "17";
 
 /// The first corpus or models/ file with this name under a directory matching `under`.
 fn find(name: &str, under: &str) -> Option<PathBuf> {
