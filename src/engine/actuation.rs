@@ -78,7 +78,7 @@ pub fn fwd_actuation(m: &Model, d: &mut Data) -> Result<(), EngineError> {
         return Ok(());
     }
     d.arena.scope(|a| -> Result<(), EngineError> {
-        let ctrl = a.alloc(nu)?;
+        let ctrl = a.alloc_stale(nu)?;
         let noclamp = disabled(m, mjtDisableBit_::mjDSBL_CLAMPCTRL);
         for i in 0..nu {
             ctrl[i] = if !noclamp && m.actuator_ctrllimited()[i] != 0 {

@@ -86,12 +86,12 @@ fn advance(m: &Model, d: &mut Data, act_dot: &[f64], qacc: &[f64], qvel: Option<
 pub fn euler(m: &Model, d: &mut Data, skipfactor: bool) -> Result<(), EngineError> {
     let nv = m.raw.nv as usize;
     let nm = m.raw.nM as usize;
-    let qacc = d.arena.alloc(nv)?;
+    let qacc = d.arena.alloc_stale(nv)?;
     if !m.dof_damping().iter().any(|&b| b > 0.0) {
         qacc.copy_from_slice(d.qacc);
     } else {
         if !skipfactor {
-            let mhb = d.arena.alloc(nm)?;
+            let mhb = d.arena.alloc_stale(nm)?;
             mhb.copy_from_slice(d.qM);
             let h = m.raw.opt.timestep;
             for i in 0..nv {
@@ -104,7 +104,7 @@ pub fn euler(m: &Model, d: &mut Data, skipfactor: bool) -> Result<(), EngineErro
         }
         solve_ld(m, qacc, None, 1, d.qH, d.qHDiagInv);
     }
-    let act_dot = d.arena.alloc(d.act_dot.len())?;
+    let act_dot = d.arena.alloc_stale(d.act_dot.len())?;
     act_dot.copy_from_slice(d.act_dot);
     advance(m, d, act_dot, qacc, None);
     Ok(())
@@ -292,7 +292,7 @@ pub fn implicit(m: &Model, d: &mut Data, skipfactor: bool) -> Result<(), EngineE
     }
     solve_lu_sparse(qacc, d.qLU, qfrc, nv, d.D_rownnz, d.D_rowadr, d.D_colind)
         .map_err(|e| EngineError(e.into()))?;
-    let act_dot = d.arena.alloc(d.act_dot.len())?;
+    let act_dot = d.arena.alloc_stale(d.act_dot.len())?;
     act_dot.copy_from_slice(d.act_dot);
     advance(m, d, act_dot, qacc, None);
     Ok(())

@@ -218,51 +218,66 @@ pub fn ray_geom(
     vec: &Vec3,
     geomtype: i32,
 ) -> Result<f64, EngineError> {
-    let t = |g: crate::abi::mjtGeom_| geomtype == g as i32;
-    Ok(if t(mjGEOM_PLANE) {
-        plane(pos, mat, size, pnt, vec)
-    } else if t(mjGEOM_SPHERE) {
-        sphere(pos, size[0], pnt, vec)
-    } else if t(mjGEOM_CAPSULE) {
-        capsule(pos, mat, size, pnt, vec)
-    } else if t(mjGEOM_ELLIPSOID) {
-        ellipsoid(pos, mat, size, pnt, vec)
-    } else if t(mjGEOM_CYLINDER) {
-        cylinder(pos, mat, size, pnt, vec)
-    } else if t(mjGEOM_BOX) {
-        boxed(pos, mat, size, pnt, vec)
-    } else {
-        return Err(EngineError(format!(
-            "mju_rayGeom: unexpected geom type {geomtype}"
-        )));
+    primitive(pos, mat, size, pnt, vec, geomtype)
+        .ok_or_else(|| EngineError(format!("mju_rayGeom: unexpected geom type {geomtype}")))
+}
+
+/// `ray_geom` for the primitive types; None for the others.
+#[inline]
+fn primitive(pos: &Vec3, mat: &Mat3, size: &[f64], pnt: &Vec3, vec: &Vec3, ty: i32) -> Option<f64> {
+    const PLANE: i32 = mjGEOM_PLANE as i32;
+    const SPHERE: i32 = mjGEOM_SPHERE as i32;
+    const CAPSULE: i32 = mjGEOM_CAPSULE as i32;
+    const ELLIPSOID: i32 = mjGEOM_ELLIPSOID as i32;
+    const CYLINDER: i32 = mjGEOM_CYLINDER as i32;
+    const BOX: i32 = mjGEOM_BOX as i32;
+    Some(match ty {
+        PLANE => plane(pos, mat, size, pnt, vec),
+        SPHERE => sphere(pos, size[0], pnt, vec),
+        CAPSULE => capsule(pos, mat, size, pnt, vec),
+        ELLIPSOID => ellipsoid(pos, mat, size, pnt, vec),
+        CYLINDER => cylinder(pos, mat, size, pnt, vec),
+        BOX => boxed(pos, mat, size, pnt, vec),
+        _ => return None,
     })
 }
 
-/// Is geom `g` left out of ray casting: the excluded body, invisible (alpha 0, own or
-/// material), static when static geoms are off, or a hidden group (planes and height fields
-/// ignore groups)?
-fn eliminated(m: &Model, g: usize, groups: Option<&[u8]>, with_static: bool, exclude: i32) -> bool {
-    let body = m.geom_bodyid()[g];
-    if body == exclude {
-        return true;
-    }
-    let mat = m.geom_matid()[g];
-    if mat < 0 && m.geom_rgba()[4 * g + 3] == 0.0 {
-        return true;
-    }
-    if mat >= 0 && m.mat_rgba()[4 * mat as usize + 3] == 0.0 {
-        return true;
-    }
-    if !with_static && body == 0 {
-        return true;
-    }
-    let ty = m.geom_type()[g];
-    if ty == mjGEOM_PLANE as i32 || ty == mjGEOM_HFIELD as i32 {
-        return false;
-    }
-    match groups {
-        None => false,
-        Some(gr) => gr[m.geom_group()[g].clamp(0, NGROUP - 1) as usize] == 0,
+/// The model arrays that decide which geoms a ray sees, taken once per cast.
+struct Visibility<'a> {
+    body: &'a [i32],
+    matid: &'a [i32],
+    rgba: &'a [f32],
+    mat_rgba: &'a [f32],
+    ty: &'a [i32],
+    group: &'a [i32],
+}
+
+impl Visibility<'_> {
+    /// Is geom `g` left out: the excluded body, invisible (alpha 0, own or material), static
+    /// when static geoms are off, or a hidden group (planes and height fields ignore groups)?
+    fn eliminated(&self, g: usize, groups: Option<&[u8]>, with_static: bool, exclude: i32) -> bool {
+        let body = self.body[g];
+        if body == exclude {
+            return true;
+        }
+        let mat = self.matid[g];
+        if mat < 0 && self.rgba[4 * g + 3] == 0.0 {
+            return true;
+        }
+        if mat >= 0 && self.mat_rgba[4 * mat as usize + 3] == 0.0 {
+            return true;
+        }
+        if !with_static && body == 0 {
+            return true;
+        }
+        let ty = self.ty[g];
+        if ty == mjGEOM_PLANE as i32 || ty == mjGEOM_HFIELD as i32 {
+            return false;
+        }
+        match groups {
+            None => false,
+            Some(gr) => gr[self.group[g].clamp(0, NGROUP - 1) as usize] == 0,
+        }
     }
 }
 
@@ -281,24 +296,30 @@ pub fn ray(
         return Err(EngineError("mj_ray: vector length is too small".into()));
     }
     let (mut dist, mut id) = (-1.0, -1);
+    let vis = Visibility {
+        body: m.geom_bodyid(),
+        matid: m.geom_matid(),
+        rgba: m.geom_rgba(),
+        mat_rgba: m.mat_rgba(),
+        ty: m.geom_type(),
+        group: m.geom_group(),
+    };
+    let size = m.geom_size();
     for g in 0..m.raw.ngeom as usize {
-        if eliminated(m, g, groups, with_static, exclude) {
+        if vis.eliminated(g, groups, with_static, exclude) {
             continue;
         }
-        let ty = m.geom_type()[g];
+        let ty = vis.ty[g];
         let x = if ty == mjGEOM_MESH as i32 {
             super::ray_mesh::ray_mesh(m, d, g, pnt, vec)?
         } else if ty == mjGEOM_HFIELD as i32 {
             super::ray_mesh::ray_hfield(m, d, g, pnt, vec)?
         } else {
-            ray_geom(
-                &row(d.geom_xpos, g),
-                &row(d.geom_xmat, g),
-                &m.geom_size()[3 * g..3 * g + 3],
-                pnt,
-                vec,
-                ty,
-            )?
+            let (pos, mat) = (row(d.geom_xpos, g), row(d.geom_xmat, g));
+            match primitive(&pos, &mat, &size[3 * g..3 * g + 3], pnt, vec, ty) {
+                Some(x) => x,
+                None => return Err(EngineError(format!("mj_ray: unexpected geom type {ty}"))),
+            }
         };
         if x >= 0.0 && (x < dist || dist < 0.0) {
             dist = x;
