@@ -136,7 +136,8 @@ fn unsupported(msg: &str) -> bool {
 
 #[test]
 fn mutated_models_get_the_reference_verdict() {
-    let (reference, ours, seeds) = loaders();
+    let l = loaders();
+    let (reference, ours, seeds) = (&l.reference, &l.ours, &l.seeds);
     assert!(!seeds.is_empty(), "no seed model loads in both libraries");
     let count = if corpus_dirs().is_empty() { 300 } else { 1000 };
     let base = work_dir("mutants");
@@ -276,8 +277,10 @@ fn mesh_files(xml: &str, dir: &Path) -> Vec<(String, std::path::PathBuf)> {
 
 #[test]
 fn mutated_mesh_files_get_the_reference_verdict() {
-    let (reference, ours, seeds) = loaders();
-    let seeds: Vec<(String, Vec<(String, std::path::PathBuf)>)> = seeds
+    let l = loaders();
+    let (reference, ours) = (&l.reference, &l.ours);
+    let seeds: Vec<(String, Vec<(String, std::path::PathBuf)>)> = l
+        .seeds
         .iter()
         .cloned()
         .filter_map(|f| {
@@ -345,5 +348,37 @@ fn mutated_mesh_files_get_the_reference_verdict() {
             .collect::<String>()
     );
     report("mesh-mutants", &msg);
+    assert!(wrong.is_empty(), "{msg}");
+}
+
+/// The corpus and project files as they are: every file the reference rejects (include
+/// fragments, malformed_face.xml, features after 2.2.2) ours rejects too, and every file it
+/// loads ours loads with the same sizes.
+#[test]
+fn corpus_files_get_the_reference_verdict() {
+    let l = loaders();
+    let mut wrong = Vec::new();
+    let (mut rejected, mut same_msg) = (0, 0);
+    for (f, (r, o)) in l
+        .files
+        .iter()
+        .zip(l.reference_verdicts.iter().zip(&l.our_verdicts))
+    {
+        let rejects = |v: &str| v.starts_with("reject");
+        if rejects(r) && rejects(o) {
+            rejected += 1;
+            same_msg += (r == o) as usize;
+        } else if r != o {
+            wrong.push(format!("{f}\n    reference: {r}\n    ours:      {o}"));
+        }
+    }
+    let msg = format!(
+        "corpus verdicts: {} files; the reference rejects {rejected}, ours too ({same_msg} with \
+         the identical message); {} differ\n{}",
+        l.files.len(),
+        wrong.len(),
+        wrong.iter().map(|w| format!("  {w}\n")).collect::<String>()
+    );
+    report("corpus-verdicts", &msg);
     assert!(wrong.is_empty(), "{msg}");
 }

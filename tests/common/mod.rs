@@ -333,11 +333,20 @@ pub fn both_verdicts(
     })
 }
 
-/// The loader program on each library and the corpus and project models both load (computed
-/// once per test binary).
-pub fn loaders() -> &'static (PathBuf, PathBuf, Vec<String>) {
-    static LOADERS: std::sync::OnceLock<(PathBuf, PathBuf, Vec<String>)> =
-        std::sync::OnceLock::new();
+/// The loader programs, the corpus and project files, and both libraries' verdicts on them.
+pub struct Loaders {
+    pub reference: PathBuf,
+    pub ours: PathBuf,
+    pub files: Vec<String>,
+    pub reference_verdicts: Vec<String>,
+    pub our_verdicts: Vec<String>,
+    /// The files both libraries load with the same sizes (the mutation seeds).
+    pub seeds: Vec<String>,
+}
+
+/// `loaders` computed once per test binary.
+pub fn loaders() -> &'static Loaders {
+    static LOADERS: std::sync::OnceLock<Loaders> = std::sync::OnceLock::new();
     LOADERS.get_or_init(|| {
         let src = [root().join("capi-tests/loader.c")];
         let reference = compile_c(&src, "loader", Lib::Ref);
@@ -350,11 +359,18 @@ pub fn loaders() -> &'static (PathBuf, PathBuf, Vec<String>) {
             .collect();
         let (r, o) = both_verdicts(&reference, &ours, &files);
         let seeds = files
-            .into_iter()
+            .iter()
             .zip(r.iter().zip(&o))
             .filter(|(_, (r, o))| r.starts_with("load") && r == o)
-            .map(|(f, _)| f)
+            .map(|(f, _)| f.clone())
             .collect();
-        (reference, ours, seeds)
+        Loaders {
+            reference,
+            ours,
+            files,
+            reference_verdicts: r,
+            our_verdicts: o,
+            seeds,
+        }
     })
 }
