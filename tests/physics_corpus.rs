@@ -56,10 +56,12 @@ fn check(
     // smooth dynamics: constraints and contacts off on both sides
     let g = ["--groups", "forward,jacBody,jacSite"];
     let smooth_run = ["--groups", "forward,jacBody,jacSite", "--disable", "17"];
-    let smooth = match smooth.then(|| harness_compare(bin, &fs, &ds, &smooth_run, &g, 600)) {
-        None => Ok(false),
-        Some(Some((true, _))) => Ok(true),
-        Some(Some((false, out))) if !out.contains("not implemented") => {
+    let smooth = match smooth
+        .then(|| harness_compare(bin, &fs, &ds, &smooth_run, &g, 600))
+        .flatten()
+    {
+        Some((true, _)) => Ok(true),
+        Some((false, out)) if !out.contains("not implemented") => {
             Err(format!("{rel} (constraints and contacts disabled):\n{out}"))
         }
         _ => Ok(false),

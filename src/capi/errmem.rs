@@ -246,7 +246,7 @@ pub fn malloc_zeroed(size: usize) -> *mut c_void {
             }
             return p;
         }
-        libc::calloc(size.div_ceil(64).max(1) * 64, 1)
+        libc::calloc(size.max(1), 1)
     };
     if ptr.is_null() {
         error("Could not allocate memory");
@@ -257,7 +257,7 @@ pub fn malloc_zeroed(size: usize) -> *mut c_void {
 /// Frees memory from `malloc` or `malloc_zeroed`, through the user deallocator when set.
 ///
 /// # Safety
-/// `ptr` is NULL or came from `malloc` and was not freed.
+/// `ptr` is NULL or came from `malloc` or `malloc_zeroed` and was not freed.
 pub unsafe fn free(ptr: *mut c_void) {
     if ptr.is_null() {
         return;

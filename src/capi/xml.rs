@@ -136,7 +136,7 @@ unsafe fn finish_compile(
     d: *mut mjData,
     compiled: &compiler::Compiled,
 ) -> Result<(), String> {
-    crate::engine::setconst::set_const_with(&mut *m, &mut *d)
+    crate::capi::engine::set_const_views(&mut *m, &mut *d)
         .map_err(|e| format!("Error: engine error: {e}"))?;
     {
         // SAFETY: no other view of m is alive.

@@ -349,8 +349,3 @@ pub fn store(mm: &mut ModelMut, stat_out: &mut mjStatistic, c: Consts) {
     }
     *stat_out = c.stat;
 }
-
-/// mj_setConst on a model and a data made for it.
-pub fn set_const_with(m: &mut mjModel, d: &mut mjData) -> Result<(), EngineError> {
-    crate::capi::engine::set_const_views(m, d)
-}
