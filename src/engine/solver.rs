@@ -9,7 +9,7 @@ use super::solver_dual::{cost_change, noslip_elliptic, noslip_pyramid, pgs_ellip
 use super::{disabled, tick, Data, EngineError, Model, MINVAL};
 use crate::abi::view::Arena;
 use crate::abi::*;
-use crate::math::blas::{add_to_scl, dot, mul_mat_vec, norm, sqr_mat_td};
+use crate::math::blas::{add_to_scl, dot, mul_mat_vec, norm, scl, sqr_mat_td, sub_from};
 use crate::math::chol::{chol_factor, chol_solve, chol_update};
 use crate::math::chol_sparse::{chol_factor_sparse, chol_solve_sparse, chol_update_sparse};
 use crate::math::sparse::{
@@ -426,8 +426,13 @@ fn update_constraint(m: &Model, d: &mut Data, c: &mut Ctx) -> Result<(), EngineE
         .count() as i32;
     c.ncone = d.efc_state[..nefc].iter().filter(|&&s| s == CONE).count() as i32;
     let mut gauss = 0.0;
-    for i in 0..nv {
-        gauss += 0.5 * (c.ma[i] - d.qfrc_smooth[i]) * (d.qacc[i] - d.qacc_smooth[i]);
+    for (((ma, fs), qacc), qs) in c.ma[..nv]
+        .iter()
+        .zip(&d.qfrc_smooth[..nv])
+        .zip(&d.qacc[..nv])
+        .zip(&d.qacc_smooth[..nv])
+    {
+        gauss += 0.5 * (ma - fs) * (qacc - qs);
     }
     c.quad_gauss[0] = gauss;
     c.cost += gauss;
@@ -437,8 +442,13 @@ fn update_constraint(m: &Model, d: &mut Data, c: &mut Ctx) -> Result<(), EngineE
 /// grad and the preconditioned gradient (Hessian or mass-matrix solve).
 fn update_gradient(m: &Model, d: &mut Data, c: &mut Ctx) {
     let nv = m.raw.nv as usize;
-    for i in 0..nv {
-        c.grad[i] = c.ma[i] - d.qfrc_smooth[i] - d.qfrc_constraint[i];
+    for (((g, ma), fs), fc) in c.grad[..nv]
+        .iter_mut()
+        .zip(&c.ma[..nv])
+        .zip(&d.qfrc_smooth[..nv])
+        .zip(&d.qfrc_constraint[..nv])
+    {
+        *g = ma - fs - fc;
     }
     let h = if c.ncone > 0 { &*c.hcone } else { &*c.h };
     if c.newton && c.sparse {
@@ -901,17 +911,13 @@ fn cg_newton(
 
     mul_m(m, d.qM, c.ma, d.qacc);
     jac_view!(m, d).mul_vec(c.jaref, d.qacc);
-    for i in 0..nefc {
-        c.jaref[i] -= d.efc_aref[i];
-    }
+    sub_from(&mut c.jaref[..nefc], &d.efc_aref[..nefc]);
     update_constraint(m, d, &mut c)?;
     if newton {
         hessian_direct(m, d, a, &mut c)?;
     }
     update_gradient(m, d, &mut c);
-    for i in 0..nv {
-        c.search[i] = -c.mgrad[i];
-    }
+    scl(&mut c.search[..nv], &c.mgrad[..nv], -1.0);
 
     let mut iter = 0;
     while iter < maxiter {
@@ -919,13 +925,9 @@ fn cg_newton(
         if alpha == 0.0 {
             break;
         }
-        for i in 0..nv {
-            d.qacc[i] += c.search[i] * alpha;
-            c.ma[i] += c.mv[i] * alpha;
-        }
-        for i in 0..nefc {
-            c.jaref[i] += c.jv[i] * alpha;
-        }
+        add_to_scl(&mut d.qacc[..nv], &c.search[..nv], alpha);
+        add_to_scl(&mut c.ma[..nv], &c.mv[..nv], alpha);
+        add_to_scl(&mut c.jaref[..nefc], &c.jv[..nefc], alpha);
         if !newton {
             gradold.copy_from_slice(c.grad);
             mgradold.copy_from_slice(c.mgrad);
@@ -956,9 +958,7 @@ fn cg_newton(
             break;
         }
         if newton {
-            for i in 0..nv {
-                c.search[i] = -c.mgrad[i];
-            }
+            scl(&mut c.search[..nv], &c.mgrad[..nv], -1.0);
         } else {
             // Polak-Ribiere; the denominator uses the old Mgrad before it is overwritten
             let den = crate::math::misc::max(MINVAL, dot(gradold, mgradold, nv));

@@ -112,15 +112,15 @@ pub fn chol_solve_sparse_in_place(
             let (adr, nnz) = (u(rowadr[i]), u(rownnz[i]));
             res[i] /= mat[adr + nnz - 1];
             let t = res[i];
-            for j in 0..nnz - 1 {
-                res[u(colind[adr + j])] -= mat[adr + j] * t;
+            for (&c, &l) in colind[adr..adr + nnz - 1].iter().zip(&mat[adr..adr + nnz - 1]) {
+                res[u(c)] -= l * t;
             }
         }
     }
     for i in 0..n {
         let (adr, nnz) = (u(rowadr[i]), u(rownnz[i]));
         if nnz > 1 {
-            let s = dot_sparse(&mat[adr..], res, nnz - 1, &colind[adr..]);
+            let s = dot_sparse(&mat[adr..adr + nnz], res, nnz - 1, &colind[adr..adr + nnz]);
             res[i] -= s;
         }
         res[i] /= mat[adr + nnz - 1];

@@ -10,8 +10,8 @@ fn u(i: i32) -> usize {
 /// vec1 (sparse, nnz1 values at indices ind1) . vec2 (dense), summed left to right.
 pub fn dot_sparse(vec1: &[f64], vec2: &[f64], nnz1: usize, ind1: &[i32]) -> f64 {
     let mut s = 0.0;
-    for i in 0..nnz1 {
-        s += vec1[i] * vec2[u(ind1[i])];
+    for (v, &i) in vec1[..nnz1].iter().zip(&ind1[..nnz1]) {
+        s += v * vec2[u(i)];
     }
     s
 }
@@ -97,9 +97,13 @@ pub fn mul_mat_vec_sparse(
     rowadr: &[i32],
     colind: &[i32],
 ) {
-    for r in 0..nr {
-        let adr = u(rowadr[r]);
-        res[r] = dot_sparse(&mat[adr..], vec, u(rownnz[r]), &colind[adr..]);
+    for ((r, &adr), &nnz) in res[..nr].iter_mut().zip(rowadr).zip(rownnz) {
+        if nnz <= 0 {
+            *r = 0.0;
+            continue;
+        }
+        let (adr, nnz) = (u(adr), u(nnz));
+        *r = dot_sparse(&mat[adr..adr + nnz], vec, nnz, &colind[adr..adr + nnz]);
     }
 }
 
@@ -220,13 +224,18 @@ pub fn compress_sparse(
     rowadr[0] = 0;
     let mut adr = u(rownnz[0]);
     for r in 1..nr {
-        let old = u(rowadr[r]);
+        let (old, n) = (u(rowadr[r]), u(rownnz[r]));
         rowadr[r] = adr as i32;
-        for a1 in old..old + u(rownnz[r]) {
-            mat[adr] = mat[a1];
-            colind[adr] = colind[a1];
-            adr += 1;
+        if old != adr {
+            // rows only move towards the front: a forward copy handles overlap
+            let shift = old - adr;
+            let (mv, cv) = (&mut mat[adr..old + n], &mut colind[adr..old + n]);
+            for k in 0..n {
+                mv[k] = mv[k + shift];
+                cv[k] = cv[k + shift];
+            }
         }
+        adr += n;
     }
 }
 
@@ -387,9 +396,13 @@ pub fn sqr_mat_td_sparse(
             buffer[u(ci)] = 0.0;
         }
         let adr_t = u(mt.rowadr[r]);
-        for i in 0..u(mt.rownnz[r]) {
-            let c = u(mt.colind[adr_t + i]);
-            let mut v = mat_t[adr_t + i];
+        let nnz_t = u(mt.rownnz[r]);
+        for (&c, &vt) in mt.colind[adr_t..adr_t + nnz_t]
+            .iter()
+            .zip(&mat_t[adr_t..adr_t + nnz_t])
+        {
+            let c = u(c);
+            let mut v = vt;
             if let Some(d) = diag {
                 v *= d[c];
             }
@@ -403,8 +416,8 @@ pub fn sqr_mat_td_sparse(
                 buffer[col] += v * x;
             }
         }
-        for i in 0..n {
-            res[adr + i] = buffer[u(res_colind[adr + i])];
+        for (x, &ci) in res[adr..adr + n].iter_mut().zip(&res_colind[adr..adr + n]) {
+            *x = buffer[u(ci)];
         }
     }
 
