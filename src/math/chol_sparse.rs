@@ -112,7 +112,10 @@ pub fn chol_solve_sparse_in_place(
             let (adr, nnz) = (u(rowadr[i]), u(rownnz[i]));
             res[i] /= mat[adr + nnz - 1];
             let t = res[i];
-            for (&c, &l) in colind[adr..adr + nnz - 1].iter().zip(&mat[adr..adr + nnz - 1]) {
+            for (&c, &l) in colind[adr..adr + nnz - 1]
+                .iter()
+                .zip(&mat[adr..adr + nnz - 1])
+            {
                 res[u(c)] -= l * t;
             }
         }

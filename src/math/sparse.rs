@@ -87,7 +87,8 @@ pub fn sparse2dense(
     }
 }
 
-/// res (nr) = sparse mat * dense vec.
+/// res (nr) = sparse mat * dense vec. Each row is summed left to right; consecutive rows
+/// with the same pattern are summed side by side (the same sums, computed together).
 pub fn mul_mat_vec_sparse(
     res: &mut [f64],
     mat: &[f64],
@@ -97,13 +98,53 @@ pub fn mul_mat_vec_sparse(
     rowadr: &[i32],
     colind: &[i32],
 ) {
-    for ((r, &adr), &nnz) in res[..nr].iter_mut().zip(rowadr).zip(rownnz) {
-        if nnz <= 0 {
-            *r = 0.0;
+    let mut r = 0;
+    while r < nr {
+        if rownnz[r] <= 0 {
+            res[r] = 0.0;
+            r += 1;
             continue;
         }
-        let (adr, nnz) = (u(adr), u(nnz));
-        *r = dot_sparse(&mat[adr..adr + nnz], vec, nnz, &colind[adr..adr + nnz]);
+        let (adr, nnz) = (u(rowadr[r]), u(rownnz[r]));
+        let ind = &colind[adr..adr + nnz];
+        let same = |q: usize| {
+            q < nr && rownnz[q] == rownnz[r] && {
+                let a = u(rowadr[q]);
+                colind[a..a + nnz] == *ind
+            }
+        };
+        let row = |q: usize| {
+            let a = u(rowadr[q]);
+            &mat[a..a + nnz]
+        };
+        if same(r + 1) {
+            if same(r + 2) && same(r + 3) {
+                let (m0, m1, m2, m3) = (row(r), row(r + 1), row(r + 2), row(r + 3));
+                let mut s = [0.0; 4];
+                for k in 0..nnz {
+                    let x = vec[u(ind[k])];
+                    s[0] += m0[k] * x;
+                    s[1] += m1[k] * x;
+                    s[2] += m2[k] * x;
+                    s[3] += m3[k] * x;
+                }
+                res[r..r + 4].copy_from_slice(&s);
+                r += 4;
+            } else {
+                let (m0, m1) = (row(r), row(r + 1));
+                let mut s = [0.0; 2];
+                for k in 0..nnz {
+                    let x = vec[u(ind[k])];
+                    s[0] += m0[k] * x;
+                    s[1] += m1[k] * x;
+                }
+                res[r..r + 2].copy_from_slice(&s);
+                r += 2;
+            }
+            continue;
+        }
+        res[r] = dot_sparse(row(r), vec, nnz, ind);
+        r += 1;
     }
 }
 

@@ -160,6 +160,7 @@ fn collide_geoms(
     g1: usize,
     g2: usize,
     pair: Option<usize>,
+    con: &mut Contacts,
 ) -> Result<bool, EngineError> {
     let (g1, g2) = if m.geom_type()[g1] > m.geom_type()[g2] {
         (g2, g1)
@@ -199,14 +200,13 @@ fn collide_geoms(
         return Ok(true);
     }
 
-    let mut con = [ContactGeom::default(); narrow::MAX_CONTACT_PAIR];
-    let mut n = narrow::collide(m, d, g1, g2, margin, &mut con);
+    let mut n = narrow::collide(m, d, g1, g2, margin, con);
     if n == 0 {
         return Ok(true);
     }
     let boxed = mjtGeom_::mjGEOM_BOX as i32;
     if t1 == boxed && t2 == boxed {
-        n = dedup_box_box(&mut con, n);
+        n = dedup_box_box(con, n);
     }
     let mut p = match pair {
         None => mixed(m, g1, g2),
@@ -251,6 +251,9 @@ fn collide_geoms(
     Ok(true)
 }
 
+/// Contacts a narrow-phase collider reports for one geom pair.
+type Contacts = [ContactGeom; narrow::MAX_CONTACT_PAIR];
+
 /// Appends a contact (mj_addContact); false with the buffer-full warning when there is no room.
 fn add_contact(m: &Model, d: &mut Data, con: mjContact) -> Result<bool, EngineError> {
     let n = d.raw.ncon.max(0) as usize;
@@ -275,10 +278,12 @@ pub fn collision(m: &Model, d: &mut Data) -> Result<(), EngineError> {
         return Ok(());
     }
     let npair = m.raw.npair.max(0) as usize;
+    // colliders write every field of the contacts they report, so one buffer serves all pairs
+    let mut con = [ContactGeom::default(); narrow::MAX_CONTACT_PAIR];
     if m.raw.opt.collision == mjtCollision_::mjCOL_PAIR as i32 {
         for p in 0..npair {
             let (g1, g2) = (m.pair_geom1()[p] as usize, m.pair_geom2()[p] as usize);
-            collide_geoms(m, d, d.arena.used(), g1, g2, Some(p))?;
+            collide_geoms(m, d, d.arena.used(), g1, g2, Some(p), &mut con)?;
         }
         return Ok(());
     }
@@ -299,7 +304,7 @@ pub fn collision(m: &Model, d: &mut Data) -> Result<(), EngineError> {
                         m.pair_geom1()[pairadr] as usize,
                         m.pair_geom2()[pairadr] as usize,
                     );
-                    collide_geoms(m, d, a.used(), g1, g2, Some(pairadr))?;
+                    collide_geoms(m, d, a.used(), g1, g2, Some(pairadr), &mut con)?;
                     pairadr += 1;
                 }
             }
@@ -322,7 +327,7 @@ pub fn collision(m: &Model, d: &mut Data) -> Result<(), EngineError> {
                             (p1 == g1 && p2 == g2) || (p1 == g2 && p2 == g1)
                         });
                     if !listed {
-                        collide_geoms(m, d, a.used(), g1, g2, None)?;
+                        collide_geoms(m, d, a.used(), g1, g2, None, &mut con)?;
                     }
                 }
             }
@@ -333,7 +338,7 @@ pub fn collision(m: &Model, d: &mut Data) -> Result<(), EngineError> {
                     m.pair_geom1()[pairadr] as usize,
                     m.pair_geom2()[pairadr] as usize,
                 );
-                collide_geoms(m, d, a.used(), g1, g2, Some(pairadr))?;
+                collide_geoms(m, d, a.used(), g1, g2, Some(pairadr), &mut con)?;
                 pairadr += 1;
             }
         }
