@@ -11,20 +11,14 @@ unsafe fn view<'a, T>(ptr: *const T, len: usize) -> &'a [T] {
     view_mut(ptr as *mut T, len)
 }
 
-/// Branch-free: a NULL pointer (only ever paired with length 0) becomes a dangling one.
+/// A NULL pointer (only ever paired with length 0) gives the empty slice.
 #[inline(always)]
 unsafe fn view_mut<'a, T>(ptr: *mut T, len: usize) -> &'a mut [T] {
-    let ptr = if ptr.is_null() {
-        std::ptr::NonNull::dangling().as_ptr()
+    if ptr.is_null() {
+        &mut []
     } else {
-        ptr
-    };
-    let len = if ptr == std::ptr::NonNull::dangling().as_ptr() {
-        0
-    } else {
-        len
-    };
-    std::slice::from_raw_parts_mut(ptr, len)
+        std::slice::from_raw_parts_mut(ptr, len)
+    }
 }
 
 macro_rules! model_views {

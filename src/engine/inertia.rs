@@ -95,32 +95,34 @@ pub fn factor_m(m: &Model, d: &mut Data) -> Result<(), EngineError> {
 /// Solves L'*D*L x = x in place for one vector.
 fn solve_ld1(m: &Model, x: &mut [f64], qld: &[f64], diag_inv: &[f64]) {
     let nv = m.raw.nv as usize;
+    let (simple, madr, parent) = (m.dof_simplenum(), m.dof_Madr(), m.dof_parentid());
+    let x = &mut x[..nv];
     for i in (0..nv).rev() {
         let tmp = x[i];
-        if m.dof_simplenum()[i] == 0 && tmp != 0.0 {
-            let mut adr = m.dof_Madr()[i] as usize + 1;
-            let mut j = m.dof_parentid()[i];
+        if simple[i] == 0 && tmp != 0.0 {
+            let mut adr = madr[i] as usize + 1;
+            let mut j = parent[i];
             while j >= 0 {
                 let ju = j as usize;
                 x[ju] -= qld[adr] * tmp;
                 adr += 1;
-                j = m.dof_parentid()[ju];
+                j = parent[ju];
             }
         }
     }
-    for i in 0..nv {
-        x[i] *= diag_inv[i];
+    for (xi, di) in x.iter_mut().zip(&diag_inv[..nv]) {
+        *xi *= di;
     }
     for i in 0..nv {
-        if m.dof_simplenum()[i] == 0 {
-            let mut adr = m.dof_Madr()[i] as usize + 1;
-            let mut j = m.dof_parentid()[i];
+        if simple[i] == 0 {
+            let mut adr = madr[i] as usize + 1;
+            let mut j = parent[i];
             let mut tmp = x[i];
             while j >= 0 {
                 let ju = j as usize;
                 tmp -= qld[adr] * x[ju];
                 adr += 1;
-                j = m.dof_parentid()[ju];
+                j = parent[ju];
             }
             x[i] = tmp;
         }
@@ -149,18 +151,19 @@ pub fn solve_ld(
 pub fn solve_m2(m: &Model, x: &mut [f64], y: &[f64], n: usize, qld: &[f64], sqrt_inv: &[f64]) {
     let nv = m.raw.nv as usize;
     x[..n * nv].copy_from_slice(&y[..n * nv]);
+    let (simple, madr, parent) = (m.dof_simplenum(), m.dof_Madr(), m.dof_parentid());
     for v in 0..n {
         let x = &mut x[v * nv..(v + 1) * nv];
         for i in (0..nv).rev() {
             let tmp = x[i];
-            if m.dof_simplenum()[i] == 0 && tmp != 0.0 {
-                let mut adr = m.dof_Madr()[i] as usize + 1;
-                let mut j = m.dof_parentid()[i];
+            if simple[i] == 0 && tmp != 0.0 {
+                let mut adr = madr[i] as usize + 1;
+                let mut j = parent[i];
                 while j >= 0 {
                     let ju = j as usize;
                     x[ju] -= qld[adr] * tmp;
                     adr += 1;
-                    j = m.dof_parentid()[ju];
+                    j = parent[ju];
                 }
             }
         }

@@ -221,8 +221,7 @@ pub fn add_m_dense(m: &Model, qm: &[f64], dst: &mut [f64]) {
     }
 }
 
-/// Merges the sorted sparse row (src, src_ind) into (dst, dst_ind): dst = dst + src
-/// (mju_combineSparse with a = b = 1); returns the new nonzero count.
+/// dst += src (sparse, mj_combineSparse with a = b = 1); returns the new nnz of dst.
 fn combine_sparse(
     dst: &mut [f64],
     dst_ind: &mut [i32],
@@ -232,40 +231,20 @@ fn combine_sparse(
     buf: &mut [f64],
     buf_ind: &mut [i32],
 ) -> usize {
-    if dst_nnz == src.len() && dst_ind[..dst_nnz] == *src_ind {
-        for (x, y) in dst[..dst_nnz].iter_mut().zip(src) {
-            *x = 1.0 * *x + 1.0 * y;
-        }
-        return dst_nnz;
-    }
-    buf[..dst_nnz].copy_from_slice(&dst[..dst_nnz]);
-    buf_ind[..dst_nnz].copy_from_slice(&dst_ind[..dst_nnz]);
-    let end = i32::MAX; // past every column index, as n + 1 is in 2.2.2
-    let (mut bi, mut si, mut nnz) = (0, 0, 0);
-    let at = |ind: &[i32], k: usize, len: usize| if k < len { ind[k] } else { end };
-    let (mut badr, mut sadr) = (at(buf_ind, 0, dst_nnz), at(src_ind, 0, src.len()));
-    while bi < dst_nnz || si < src.len() {
-        if badr == sadr {
-            dst[nnz] = 1.0 * buf[bi] + 1.0 * src[si];
-            dst_ind[nnz] = badr;
-            bi += 1;
-            si += 1;
-            badr = at(buf_ind, bi, dst_nnz);
-            sadr = at(src_ind, si, src.len());
-        } else if badr < sadr {
-            dst[nnz] = 1.0 * buf[bi];
-            dst_ind[nnz] = badr;
-            bi += 1;
-            badr = at(buf_ind, bi, dst_nnz);
-        } else {
-            dst[nnz] = 1.0 * src[si];
-            dst_ind[nnz] = sadr;
-            si += 1;
-            sadr = at(src_ind, si, src.len());
-        }
-        nnz += 1;
-    }
-    nnz
+    let n = i32::MAX as usize - 1; // past every column index
+    crate::math::sparse::combine_sparse(
+        dst,
+        src,
+        n,
+        1.0,
+        1.0,
+        dst_nnz,
+        src.len(),
+        dst_ind,
+        src_ind,
+        buf,
+        buf_ind,
+    )
 }
 
 /// dst += M for a sparse uncompressed destination (mj_addM with row descriptors).

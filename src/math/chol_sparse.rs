@@ -1,7 +1,7 @@
 //! Sparse reverse-order Cholesky (mat = L'*L, rows ending at the diagonal) and sparse LU
 //! without fill-in, as 2.2.2 uses for the Newton solver and the implicit integrator.
 
-use super::sparse::{combine_sparse, dot_sparse};
+use super::sparse::{combine_sparse, dot_sparse, same_pattern};
 use super::MINVAL;
 
 #[inline]
@@ -221,7 +221,7 @@ fn combine_sparse_fixed(
     buf: &mut [f64],
     buf_ind: &mut [i32],
 ) -> usize {
-    if dst_nnz == src_nnz && dst_ind[..dst_nnz] == src_ind[..src_nnz] {
+    if dst_nnz == src_nnz && same_pattern(&dst_ind[..dst_nnz], &src_ind[..src_nnz]) {
         for (d, s) in dst[..dst_nnz].iter_mut().zip(src) {
             *d = *d * a + s * b;
         }

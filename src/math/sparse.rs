@@ -7,6 +7,16 @@ fn u(i: i32) -> usize {
     i as usize
 }
 
+/// Do two index lists of equal length match? (Inline: short lists, no library call.)
+#[inline]
+pub fn same_pattern(a: &[i32], b: &[i32]) -> bool {
+    let mut same = a.len() == b.len();
+    for (x, y) in a.iter().zip(b) {
+        same &= x == y;
+    }
+    same
+}
+
 /// vec1 (sparse, nnz1 values at indices ind1) . vec2 (dense), summed left to right.
 pub fn dot_sparse(vec1: &[f64], vec2: &[f64], nnz1: usize, ind1: &[i32]) -> f64 {
     let mut s = 0.0;
@@ -110,7 +120,7 @@ pub fn mul_mat_vec_sparse(
         let same = |q: usize| {
             q < nr && rownnz[q] == rownnz[r] && {
                 let a = u(rowadr[q]);
-                colind[a..a + nnz] == *ind
+                same_pattern(&colind[a..a + nnz], ind)
             }
         };
         let row = |q: usize| {
@@ -171,15 +181,42 @@ pub fn combine_sparse(
     buf: &mut [f64],
     buf_ind: &mut [i32],
 ) -> usize {
-    if dst_nnz == src_nnz && dst_ind[..dst_nnz] == src_ind[..src_nnz] {
+    if dst_nnz == src_nnz && same_pattern(&dst_ind[..dst_nnz], &src_ind[..src_nnz]) {
         add_to_scl_scl(&mut dst[..dst_nnz], &src[..dst_nnz], a, b);
         return dst_nnz;
     }
-    buf[..dst_nnz].copy_from_slice(&dst[..dst_nnz]);
-    buf_ind[..dst_nnz].copy_from_slice(&dst_ind[..dst_nnz]);
+    // in place while every src index so far is in dst (the common case in factorizations)
+    let (mut k, mut si) = (0, 0);
+    while k < dst_nnz {
+        let sadr = if si < src_nnz { src_ind[si] } else { i32::MAX };
+        let dadr = dst_ind[k];
+        if sadr == dadr {
+            dst[k] = a * dst[k] + b * src[si];
+            si += 1;
+        } else if sadr < dadr {
+            break;
+        } else {
+            dst[k] = a * dst[k];
+        }
+        k += 1;
+    }
+    if k == dst_nnz {
+        // the rest of src comes after every dst index
+        let rest = src_nnz - si;
+        for (x, y) in dst[k..k + rest].iter_mut().zip(&src[si..src_nnz]) {
+            *x = b * y;
+        }
+        dst_ind[k..k + rest].copy_from_slice(&src_ind[si..src_nnz]);
+        return k + rest;
+    }
 
+    // general merge of the remaining dst (moved to buf) and src, from position k
+    let buf_nnz = dst_nnz - k;
+    buf[..buf_nnz].copy_from_slice(&dst[k..dst_nnz]);
+    buf_ind[..buf_nnz].copy_from_slice(&dst_ind[k..dst_nnz]);
     let end = n as i32 + 1;
-    let (mut bi, mut si, mut nnz) = (0, 0, 0);
+    let (mut bi, mut nnz) = (0, k);
+    let dst_nnz = buf_nnz;
     let adr = |ind: &[i32], i: usize, len: usize| if i < len { ind[i] } else { end };
     let mut badr = adr(buf_ind, bi, dst_nnz);
     let mut sadr = adr(src_ind, si, src_nnz);
@@ -220,7 +257,7 @@ pub fn combine_sparse_inc(
     dst_ind: &[i32],
     src_ind: &[i32],
 ) {
-    if dst_nnz == src_nnz && dst_ind[..dst_nnz] == src_ind[..src_nnz] {
+    if dst_nnz == src_nnz && same_pattern(&dst_ind[..dst_nnz], &src_ind[..src_nnz]) {
         add_to_scl_scl(&mut dst[..dst_nnz], &src[..dst_nnz], a, b);
         return;
     }
@@ -328,7 +365,7 @@ pub fn super_sparse(
         } else {
             let n = u(rownnz[r]);
             let (a, b) = (u(rowadr[r]), u(rowadr[r + 1]));
-            (colind[a..a + n] == colind[b..b + n]) as i32
+            same_pattern(&colind[a..a + n], &colind[b..b + n]) as i32
         };
     }
     rowsuper[nr - 1] = 0;
