@@ -6,11 +6,6 @@
 
 use super::*;
 
-#[inline(always)]
-unsafe fn view<'a, T>(ptr: *const T, len: usize) -> &'a [T] {
-    view_mut(ptr as *mut T, len)
-}
-
 /// A NULL pointer (only ever paired with length 0) gives the empty slice.
 #[inline(always)]
 unsafe fn view_mut<'a, T>(ptr: *mut T, len: usize) -> &'a mut [T] {
@@ -19,6 +14,14 @@ unsafe fn view_mut<'a, T>(ptr: *mut T, len: usize) -> &'a mut [T] {
     } else {
         std::slice::from_raw_parts_mut(ptr, len)
     }
+}
+
+/// An mjModel or mjData array: `make_model` and `alloc_data` give every one a non-null,
+/// aligned address in the struct's buffer, so no NULL check is needed.
+#[inline(always)]
+unsafe fn array_view<'a, T>(ptr: *mut T, len: usize) -> &'a mut [T] {
+    debug_assert!(!ptr.is_null());
+    std::slice::from_raw_parts_mut(ptr, len)
 }
 
 macro_rules! model_views {
@@ -46,7 +49,7 @@ macro_rules! model_views {
                 #[inline(always)]
                 pub fn $name(&self) -> &'a [elem_ty!($t)] {
                     // SAFETY: `new`'s contract: the array has this X-macro length.
-                    unsafe { view(self.raw.$name, row_len!(self.raw, $d1, $($d2)+)) }
+                    unsafe { array_view(self.raw.$name, row_len!(self.raw, $d1, $($d2)+)) }
                 }
             )*
         }
@@ -80,7 +83,7 @@ macro_rules! data_views {
                 let pstack = d.pstack.clamp(0, d.nstack) as usize;
                 let stack = view_mut(d.stack, d.nstack.max(0) as usize);
                 let arena = Arena { free: &mut stack[pstack..], used: pstack, peak: pstack };
-                $(let $name = view_mut(d.$name, row_len!(m, $d1, $($d2)+));)*
+                $(let $name = array_view(d.$name, row_len!(m, $d1, $($d2)+));)*
                 Data { raw: d, arena, $($name,)* }
             }
         }
