@@ -155,4 +155,46 @@ fn stepping_does_not_allocate() {
             mj_deleteModel(m);
         }
     }
+    warning_and_reset_do_not_allocate();
+}
+
+static WARNINGS: AtomicUsize = AtomicUsize::new(0);
+
+unsafe extern "C" fn count_warning(_msg: *const c_char) {
+    WARNINGS.fetch_add(1, Ordering::SeqCst);
+}
+
+/// An unstable state (NaN velocity) warns and resets on every step (the warning count cleared
+/// so that each one is reported): the warning path, its message and the reset take no heap
+/// memory either. Runs inside `stepping_does_not_allocate` (the C counters are global).
+fn warning_and_reset_do_not_allocate() {
+    let path = CString::new(concat!(env!("CARGO_MANIFEST_DIR"), "/models/pendulum.xml")).unwrap();
+    unsafe {
+        let mut err = [0 as c_char; 500];
+        let m = mj_loadXML(path.as_ptr(), std::ptr::null(), err.as_mut_ptr(), 500);
+        assert!(!m.is_null(), "pendulum did not load");
+        let d = mj_makeData(m);
+        mj_step(m, d);
+        mujoco::capi::errmem::mju_user_warning = Some(count_warning);
+        let before = (
+            ALLOCATIONS.load(Ordering::SeqCst),
+            C_ALLOCATIONS.load(Ordering::SeqCst),
+        );
+        for _ in 0..100 {
+            *(*d).qvel = f64::NAN;
+            (*d).warning[mjtWarning_::mjWARN_BADQVEL as usize].number = 0;
+            mj_step(m, d);
+        }
+        let after = (
+            ALLOCATIONS.load(Ordering::SeqCst),
+            C_ALLOCATIONS.load(Ordering::SeqCst),
+        );
+        mujoco::capi::errmem::mju_user_warning = None;
+        let warned = WARNINGS.load(Ordering::SeqCst);
+        println!("{warned} warnings in 100 unstable steps");
+        assert_eq!(warned, 100, "every unstable step warns");
+        assert_eq!(before, after, "the warning path allocated");
+        mj_deleteData(d);
+        mj_deleteModel(m);
+    }
 }

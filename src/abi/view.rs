@@ -141,6 +141,7 @@ impl<'a> Arena<'a> {
     }
 
     /// `n` zeroed mjtNums, or an error like 2.2.2's "Stack overflow".
+    #[inline]
     pub fn alloc(&mut self, n: usize) -> Result<&'a mut [f64], EngineError> {
         let head = self.alloc_stale(n)?;
         head.fill(0.0);
@@ -149,6 +150,7 @@ impl<'a> Arena<'a> {
 
     /// `n` mjtNums holding whatever an earlier allocation left there (not zeroed, like
     /// mj_stackAlloc): for scratch the caller writes before it reads.
+    #[inline]
     pub fn alloc_stale(&mut self, n: usize) -> Result<&'a mut [f64], EngineError> {
         if n > self.free.len() {
             return Err(EngineError("Stack overflow".into()));
@@ -162,6 +164,7 @@ impl<'a> Arena<'a> {
     }
 
     /// `n` ints, not zeroed (see `alloc_stale`).
+    #[inline]
     pub fn alloc_int_stale(&mut self, n: usize) -> Result<&'a mut [i32], EngineError> {
         let words = self.alloc_stale(n.div_ceil(2))?;
         // SAFETY: f64 storage is 8-aligned, initialized and large enough for n i32s.
@@ -169,6 +172,7 @@ impl<'a> Arena<'a> {
     }
 
     /// `n` zeroed ints, taken from the same stack (two per mjtNum).
+    #[inline]
     pub fn alloc_int(&mut self, n: usize) -> Result<&'a mut [i32], EngineError> {
         let words = self.alloc(n.div_ceil(2))?;
         // SAFETY: f64 storage is 8-aligned and large enough for n i32s; zero bits are 0i32.
@@ -176,6 +180,7 @@ impl<'a> Arena<'a> {
     }
 
     /// Runs `f` with a nested arena; everything it allocates is released afterwards.
+    #[inline]
     pub fn scope<R>(&mut self, f: impl FnOnce(&mut Arena<'_>) -> R) -> R {
         let mut inner = Arena {
             free: &mut *self.free,
@@ -188,6 +193,7 @@ impl<'a> Arena<'a> {
     }
 
     /// Number of mjtNums in use, counted from the bottom of the `mjData` stack.
+    #[inline]
     pub fn used(&self) -> usize {
         self.used
     }

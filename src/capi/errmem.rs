@@ -54,19 +54,23 @@ pub fn write_log(kind: &str, msg: &str) {
         .append(true)
         .open("MUJOCO_LOG.TXT")
     {
-        let _ = write!(f, "{}{}: {}\n\n", asctime_now(), kind, msg);
+        let mut date = [0 as c_char; 64];
+        let _ = f.write_all(asctime_now(&mut date));
+        let _ = write!(f, "{}: {}\n\n", kind, msg);
     }
 }
 
-fn asctime_now() -> String {
-    // SAFETY: plain libc time formatting into a local buffer.
+/// The local time as asctime writes it, in `buf`.
+fn asctime_now(buf: &mut [c_char; 64]) -> &[u8] {
+    // SAFETY: plain libc time formatting into a local buffer of asctime_r's required size.
     unsafe {
         let t = libc::time(std::ptr::null_mut());
         let mut tm: libc::tm = std::mem::zeroed();
         libc::localtime_r(&t, &mut tm);
-        let mut buf = [0 as c_char; 64];
-        libc::asctime_r(&tm, buf.as_mut_ptr());
-        CStr::from_ptr(buf.as_ptr()).to_string_lossy().into_owned()
+        if libc::asctime_r(&tm, buf.as_mut_ptr()).is_null() {
+            return &[];
+        }
+        CStr::from_ptr(buf.as_ptr()).to_bytes()
     }
 }
 
@@ -93,10 +97,57 @@ pub fn c_stdout_flush() {
     }
 }
 
-fn c_message(msg: &str) -> Vec<u8> {
-    let mut v: Vec<u8> = msg.bytes().filter(|&b| b != 0).take(999).collect();
-    v.push(0);
-    v
+/// A message of at most 999 bytes on the stack (2.2.2's 1000-byte buffers), NUL-terminated
+/// for C handlers: runtime warnings are reported without heap allocation.
+pub struct MsgBuf {
+    buf: [u8; 1000],
+    len: usize,
+}
+
+impl MsgBuf {
+    pub fn new() -> Self {
+        MsgBuf {
+            buf: [0; 1000],
+            len: 0,
+        }
+    }
+
+    /// The text written so far (truncation keeps whole characters).
+    pub fn as_str(&self) -> &str {
+        std::str::from_utf8(&self.buf[..self.len]).unwrap_or("")
+    }
+
+    /// NUL-terminated copy of the text for C.
+    fn as_c(&self) -> *const c_char {
+        self.buf.as_ptr() as *const c_char
+    }
+}
+
+impl Default for MsgBuf {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl std::fmt::Write for MsgBuf {
+    fn write_str(&mut self, s: &str) -> std::fmt::Result {
+        for c in s.chars().filter(|&c| c != '\0') {
+            let n = c.len_utf8();
+            if self.len + n > self.buf.len() - 1 {
+                break;
+            }
+            c.encode_utf8(&mut self.buf[self.len..self.len + n]);
+            self.len += n;
+        }
+        self.buf[self.len] = 0;
+        Ok(())
+    }
+}
+
+fn c_message(msg: &str) -> MsgBuf {
+    let mut b = MsgBuf::new();
+    let _ = std::fmt::Write::write_str(&mut b, msg);
+    b
 }
 
 /// Reports a fatal error: thread-local hook, user handler, or print, log and exit.
@@ -105,9 +156,9 @@ pub fn error(msg: &str) {
     // SAFETY: handlers are C callbacks taking a NUL-terminated string.
     unsafe {
         if let Some(h) = _mjPRIVATE__get_tls_error_fn() {
-            h(text.as_ptr() as *const c_char);
+            h(text.as_c());
         } else if let Some(h) = mju_user_error {
-            h(text.as_ptr() as *const c_char);
+            h(text.as_c());
         } else {
             write_log("ERROR", msg);
             c_stdout(&format!("ERROR: {msg}\n\nPress Enter to exit ..."));
@@ -124,12 +175,14 @@ pub fn warning(msg: &str) {
     // SAFETY: as in `error`.
     unsafe {
         if let Some(h) = _mjPRIVATE__get_tls_warning_fn() {
-            h(text.as_ptr() as *const c_char);
+            h(text.as_c());
         } else if let Some(h) = mju_user_warning {
-            h(text.as_ptr() as *const c_char);
+            h(text.as_c());
         } else {
             write_log("WARNING", msg);
-            c_stdout(&format!("WARNING: {msg}\n\n"));
+            c_stdout("WARNING: ");
+            c_stdout(msg);
+            c_stdout("\n\n");
         }
     }
 }

@@ -36,12 +36,11 @@ pub fn warning(d: &mut mjData, kind: i32, info: i32) -> Result<(), EngineError> 
     let w = &mut d.warning[kind as usize];
     w.lastinfo = info;
     if w.number == 0 {
-        let text = format!(
-            "{} Time = {:.4}.",
-            crate::math::misc::warning_text(kind, info),
-            d.time
-        );
-        crate::capi::errmem::warning(&text);
+        use std::fmt::Write;
+        let mut text = crate::capi::errmem::MsgBuf::new();
+        let _ = crate::math::misc::write_warning_text(&mut text, kind, info);
+        let _ = write!(text, " Time = {:.4}.", d.time);
+        crate::capi::errmem::warning(text.as_str());
     }
     d.warning[kind as usize].number += 1;
     Ok(())

@@ -229,18 +229,51 @@ pub fn str2type(s: &[u8]) -> i32 {
 
 /// Text of a warning (mjtWarning) with its info number.
 pub fn warning_text(warning: i32, info: i32) -> String {
+    let mut s = String::new();
+    let _ = write_warning_text(&mut s, warning, info);
+    s
+}
+
+/// Writes the text of `warning_text` (no allocation of its own).
+pub fn write_warning_text(
+    w: &mut impl std::fmt::Write,
+    warning: i32,
+    info: i32,
+) -> std::fmt::Result {
     match warning {
-        0 => format!("Inertia matrix is too close to singular at DOF {info}. Check model."),
-        1 => format!("Pre-allocated contact buffer is full. Increase nconmax above {info}."),
-        2 => format!("Pre-allocated constraint buffer is full. Increase njmax above {info}."),
-        3 => format!("Pre-allocated visual geom buffer is full. Increase maxgeom above {info}."),
-        4 => format!("Nan, Inf or huge value in QPOS at DOF {info}. The simulation is unstable."),
-        5 => format!("Nan, Inf or huge value in QVEL at DOF {info}. The simulation is unstable."),
-        6 => format!("Nan, Inf or huge value in QACC at DOF {info}. The simulation is unstable."),
-        7 => format!(
+        0 => write!(
+            w,
+            "Inertia matrix is too close to singular at DOF {info}. Check model."
+        ),
+        1 => write!(
+            w,
+            "Pre-allocated contact buffer is full. Increase nconmax above {info}."
+        ),
+        2 => write!(
+            w,
+            "Pre-allocated constraint buffer is full. Increase njmax above {info}."
+        ),
+        3 => write!(
+            w,
+            "Pre-allocated visual geom buffer is full. Increase maxgeom above {info}."
+        ),
+        4 => write!(
+            w,
+            "Nan, Inf or huge value in QPOS at DOF {info}. The simulation is unstable."
+        ),
+        5 => write!(
+            w,
+            "Nan, Inf or huge value in QVEL at DOF {info}. The simulation is unstable."
+        ),
+        6 => write!(
+            w,
+            "Nan, Inf or huge value in QACC at DOF {info}. The simulation is unstable."
+        ),
+        7 => write!(
+            w,
             "Nan, Inf or huge value in CTRL at ACTUATOR {info}. The simulation is unstable."
         ),
-        _ => format!("Unknown warning type {warning}."),
+        _ => write!(w, "Unknown warning type {warning}."),
     }
 }
 

@@ -196,7 +196,7 @@ pub fn combine_sparse(
         } else if sadr < dadr {
             break;
         } else {
-            dst[k] = a * dst[k];
+            dst[k] *= a;
         }
         k += 1;
     }
