@@ -875,28 +875,28 @@ fn cg_newton(
     let nefc = d.raw.nefc as usize;
     let hn = if newton { nv * nv } else { 0 };
     let mut c = Ctx {
-        jaref: a.alloc(nefc)?,
-        jv: a.alloc(nefc)?,
-        ma: a.alloc(nv)?,
-        mv: a.alloc(nv)?,
-        grad: a.alloc(nv)?,
-        mgrad: a.alloc(nv)?,
-        search: a.alloc(nv)?,
-        quad: a.alloc(3 * nefc)?,
+        jaref: a.alloc_stale(nefc)?,
+        jv: a.alloc_stale(nefc)?,
+        ma: a.alloc_stale(nv)?,
+        mv: a.alloc_stale(nv)?,
+        grad: a.alloc_stale(nv)?,
+        mgrad: a.alloc_stale(nv)?,
+        search: a.alloc_stale(nv)?,
+        quad: a.alloc_stale(3 * nefc)?,
         newton,
         h: a.alloc_stale(hn)?,
         hcone: a.alloc_stale(hn)?,
-        hdiag: a.alloc(if newton { nefc } else { 0 })?,
-        hvec: a.alloc(if newton { nv } else { 0 })?,
+        hdiag: a.alloc_stale(if newton { nefc } else { 0 })?,
+        hvec: a.alloc_stale(if newton { nv } else { 0 })?,
         sparse: is_sparse(m),
         nnz: 0,
-        rownnz: a.alloc_int(if newton { nv } else { 0 })?,
-        rowadr: a.alloc_int(if newton { nv } else { 0 })?,
+        rownnz: a.alloc_int_stale(if newton { nv } else { 0 })?,
+        rowadr: a.alloc_int_stale(if newton { nv } else { 0 })?,
         colind: a.alloc_int_stale(hn)?,
-        vec_ind: a.alloc_int(if newton { nv } else { 0 })?,
-        buf: a.alloc(if newton { nv } else { 0 })?,
-        buf_ind: a.alloc_int(if newton { nv } else { 0 })?,
-        chain: a.alloc_int(if newton { 2 * nv } else { 0 })?,
+        vec_ind: a.alloc_int_stale(if newton { nv } else { 0 })?,
+        buf: a.alloc_stale(if newton { nv } else { 0 })?,
+        buf_ind: a.alloc_int_stale(if newton { nv } else { 0 })?,
+        chain: a.alloc_int_stale(if newton { 2 * nv } else { 0 })?,
         cost: 0.0,
         quad_gauss: [0.0; 3],
         nactive: 0,
@@ -905,9 +905,9 @@ fn cg_newton(
         ls_iter: 0,
         ls_slope: 1.0,
     };
-    let gradold = a.alloc(nv)?;
-    let mgradold = a.alloc(nv)?;
-    let oldstate = a.alloc_int(nefc)?;
+    let gradold = a.alloc_stale(nv)?;
+    let mgradold = a.alloc_stale(nv)?;
+    let oldstate = a.alloc_int_stale(nefc)?;
 
     mul_m(m, d.qM, c.ma, d.qacc);
     jac_view!(m, d).mul_vec(c.jaref, d.qacc);
