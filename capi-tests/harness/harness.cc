@@ -152,16 +152,20 @@ int record(const char* model, const std::string& dir, bool model_only, const std
     run_trajectory(m, d, traj, nullptr, true);
     return saved(traj, out + "trajnoise.bin");
   }, kSeconds);
+  // read once here and shared with every group's child (forward.bin once the forward group,
+  // which runs first, has written it)
+  Reader states, post;
+  bool have_states = false, have_post = false;
   for (const auto& [group, check] : checks) {
     if (!selected(only, group)) continue;
+    if (!have_states) have_states = states.load(dir + "/states.bin");
+    if (!have_post && group != "forward") have_post = post.load(out + "forward.bin");
     ok = isolated(out + group + ".status", [&, group = group, check = check]() -> std::string {
       std::string e;
       mjModel* m = load(model, e);
       if (!m) return e;
       mjData* d = mj_makeData(m);
-      Reader states, post;
-      if (!states.load(dir + "/states.bin")) return "no states.bin";
-      post.load(out + "forward.bin");
+      if (!have_states) return "no states.bin";
       const Rec* n = states.get("nstate");
       Inputs in{&states, &post, n ? n->i()[0] : 0};
       Writer w;
@@ -208,17 +212,20 @@ int replay(const char* model, const std::string& dir, bool model_only, const std
     run_trajectory(m, d, traj, nullptr);
     return saved(traj, out + "traj.bin");
   }, kSeconds);
+  // read once here and shared with every group's child (the forward group needs no results)
+  Reader states, post;
+  bool have_states = false, have_post = false;
   for (const auto& [group, check] : state_checks()) {
     if (!selected(only, group)) continue;
+    if (!have_states) have_states = states.load(dir + "/states.bin");
+    if (!have_post && group != "forward") have_post = post.load(ref + "forward.bin");
     isolated(out + group + ".status", [&, group = group, check = check]() -> std::string {
       if (!have_ref) return "no reference model.bin";
       mjModel* m = transplant_model(refmodel);
       m->opt.disableflags |= g_disable;
       mjData* d = needs_data(group) ? mj_makeData(m) : nullptr;
       if (needs_data(group) && !d) return "mj_makeData returned NULL";
-      Reader states, post;
-      if (!states.load(dir + "/states.bin")) return "no states.bin";
-      post.load(ref + "forward.bin");
+      if (!have_states) return "no states.bin";
       const Rec* n = states.get("nstate");
       Inputs in{&states, &post, n ? n->i()[0] : 0};
       Writer w;
