@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <cstring>
 #include <map>
+#include <sys/types.h>
 #include <string>
 #include <vector>
 
@@ -117,4 +118,64 @@ class Reader {
 
  private:
   std::map<std::string, size_t> index_;
+};
+
+// A record file read one record at a time (comparisons of large models: a file can exceed
+// memory). open() indexes names, types and byte ranges; fetch() reads one record's bytes.
+class IndexedReader {
+ public:
+  IndexedReader() = default;
+  IndexedReader(const IndexedReader&) = delete;
+  IndexedReader& operator=(const IndexedReader&) = delete;
+  ~IndexedReader() {
+    if (fp_) std::fclose(fp_);
+  }
+
+  bool open(const std::string& path) {
+    fp_ = std::fopen(path.c_str(), "rb");
+    if (!fp_) return false;
+    char magic[4];
+    bool ok = std::fread(magic, 1, 4, fp_) == 4 && !std::memcmp(magic, "RJH1", 4);
+    while (ok) {
+      uint32_t nl;
+      if (std::fread(&nl, 4, 1, fp_) != 1) break;
+      std::string name(nl, '\0');
+      Ent e;
+      ok = std::fread(&name[0], 1, nl, fp_) == nl && std::fread(&e.type, 1, 1, fp_) == 1 &&
+           std::fread(&e.size, 8, 1, fp_) == 1;
+      if (!ok) break;
+      e.off = ftello(fp_);
+      ok = e.off >= 0 && fseeko(fp_, static_cast<off_t>(e.size), SEEK_CUR) == 0;
+      if (ok) {
+        if (!index_.count(name)) order_.push_back(name);
+        index_[name] = e;
+      }
+    }
+    return ok;
+  }
+
+  // The names in file order.
+  const std::vector<std::string>& names() const { return order_; }
+
+  // Reads record `name` into r; false when absent or unreadable.
+  bool fetch(const std::string& name, Rec& r) {
+    auto it = index_.find(name);
+    if (it == index_.end()) return false;
+    const Ent& e = it->second;
+    r.name = name;
+    r.type = e.type;
+    r.bytes.resize(e.size);
+    return fseeko(fp_, e.off, SEEK_SET) == 0 &&
+           (!e.size || std::fread(r.bytes.data(), 1, e.size, fp_) == e.size);
+  }
+
+ private:
+  struct Ent {
+    char type = 'd';
+    uint64_t size = 0;
+    off_t off = 0;
+  };
+  FILE* fp_ = nullptr;
+  std::map<std::string, Ent> index_;
+  std::vector<std::string> order_;
 };

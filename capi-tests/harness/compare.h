@@ -126,14 +126,15 @@ struct Floors {
 
 inline Floors noise_floors(const std::string& a_path, const std::string& b_path) {
   Floors f;
-  Reader a, b;
-  if (!a.load(a_path) || !b.load(b_path)) return f;
-  for (const Rec& ra : a.recs) {
+  IndexedReader a, b;
+  if (!a.open(a_path) || !b.open(b_path)) return f;
+  Rec ra, rb;
+  for (const std::string& name : a.names()) {
+    if (!a.fetch(name, ra)) continue;
     if (ra.type != 'd' && ra.type != 'q') continue;
-    const Rec* rb = b.get(ra.name);
-    if (!rb || rb->bytes.size() != ra.bytes.size()) continue;
+    if (!b.fetch(name, rb) || rb.bytes.size() != ra.bytes.size()) continue;
     std::string where, q = ra.name.substr(0, ra.name.find('#'));
-    double e = rec_err(ra, *rb, where);
+    double e = rec_err(ra, rb, where);
     if (!std::isfinite(e)) continue;
     double& pq = f.per[q];
     pq = std::max(pq, e);
@@ -161,19 +162,25 @@ inline bool compare_group(const std::string& dir, const std::string& group, doub
     std::printf("  %-16s FAIL  %s\n", group.c_str(), our_status.c_str());
     return false;
   }
-  Reader ref, ours;
-  if (!ref.load(dir + "/ref/" + group + ".bin") || !ours.load(dir + "/ours/" + group + ".bin")) {
+  // one record of each side in memory at a time: result files can exceed memory
+  IndexedReader ref, ours;
+  if (!ref.open(dir + "/ref/" + group + ".bin") || !ours.open(dir + "/ours/" + group + ".bin")) {
     std::printf("  %-16s FAIL  unreadable result file\n", group.c_str());
     return false;
   }
   std::vector<std::string> order;
   std::map<std::string, Worst> per;
-  for (const Rec& a : ref.recs) {
+  Rec a, ob;
+  for (const std::string& name : ref.names()) {
+    if (!ref.fetch(name, a)) {
+      std::printf("  %-16s FAIL  unreadable record %s\n", group.c_str(), name.c_str());
+      return false;
+    }
     if (a.type == 'r' || a.type == 'o') continue;
     std::string q = a.name.substr(0, a.name.find('#'));
     if (!per.count(q)) order.push_back(q);
     Worst& w = per[q];
-    const Rec* b = ours.get(a.name);
+    const Rec* b = ours.fetch(name, ob) ? &ob : nullptr;
     std::string where;
     double e = b ? rec_err(a, *b, where) : INFINITY;
     if (!b) where = "missing in ours";
