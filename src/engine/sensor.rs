@@ -86,7 +86,7 @@ fn put_vec(d: &mut Data, adr: usize, v: &[f64]) {
 
 /// Position-dependent sensors (mj_sensorPos).
 pub fn sensor_pos(m: &Model, d: &mut Data) -> Result<(), EngineError> {
-    if disabled(m, mjtDisableBit_::mjDSBL_SENSOR) {
+    if disabled(m, mjtDisableBit_::mjDSBL_SENSOR) || m.raw.nsensor <= 0 {
         return Ok(());
     }
     for i in 0..m.raw.nsensor as usize {
@@ -181,7 +181,7 @@ pub fn sensor_pos(m: &Model, d: &mut Data) -> Result<(), EngineError> {
 
 /// Velocity-dependent sensors (mj_sensorVel).
 pub fn sensor_vel(m: &Model, d: &mut Data) -> Result<(), EngineError> {
-    if disabled(m, mjtDisableBit_::mjDSBL_SENSOR) {
+    if disabled(m, mjtDisableBit_::mjDSBL_SENSOR) || m.raw.nsensor <= 0 {
         return Ok(());
     }
     let mut have_subtree = false;
@@ -302,7 +302,7 @@ fn touch(m: &Model, d: &Data, site: usize) -> Result<f64, EngineError> {
 
 /// Acceleration- and force-dependent sensors (mj_sensorAcc).
 pub fn sensor_acc(m: &Model, d: &mut Data) -> Result<(), EngineError> {
-    if disabled(m, mjtDisableBit_::mjDSBL_SENSOR) {
+    if disabled(m, mjtDisableBit_::mjDSBL_SENSOR) || m.raw.nsensor <= 0 {
         return Ok(());
     }
     let mut have_rne = false;
