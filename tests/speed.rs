@@ -1,4 +1,4 @@
-//! Simulation speed against the reference, side by side in one run (best of 3, alternating):
+//! Simulation speed against the reference, side by side in one run (best of 5, alternating):
 //! the models the issues name, with constraints and contacts disabled (smooth dynamics) and
 //! with full physics. Reports ratios (target/capi-tests/reports/speed.txt); a model our engine
 //! cannot run yet is reported as such. Fails only if a run breaks in an unexpected way.
@@ -63,7 +63,7 @@ fn speed_against_the_reference() {
             };
             let (mut best_ref, mut best_ours) = (0.0f64, 0.0f64);
             let mut failure = None;
-            for _ in 0..3 {
+            for _ in 0..5 {
                 match (rate(&reference, flags, &path), rate(&ours, flags, &path)) {
                     (Ok(r), Ok(o)) => {
                         best_ref = best_ref.max(r);
@@ -86,7 +86,7 @@ fn speed_against_the_reference() {
         }
     }
     let msg = format!(
-        "speed ({STEPS} steps, best of 3, ours/reference):\n{}\n",
+        "speed ({STEPS} steps, best of 5, ours/reference):\n{}\n",
         lines.join("\n")
     );
     report("speed", &msg);
@@ -124,12 +124,12 @@ fn loading_speed() {
         );
         t
     };
-    // best of 3 per file, alternating
+    // best of 2 per file, alternating
     let (mut tr, mut to) = (
         vec![f64::INFINITY; files.len()],
         vec![f64::INFINITY; files.len()],
     );
-    for _ in 0..3 {
+    for _ in 0..2 {
         for (best, t) in [(&mut tr, times(&reference)), (&mut to, times(&ours))] {
             for (b, t) in best.iter_mut().zip(t) {
                 *b = if t < 0.0 { -1.0 } else { b.min(t) };
@@ -145,7 +145,7 @@ fn loading_speed() {
         .iter()
         .fold((0.0, 0.0), |(a, b), &(r, o)| (a + r, b + o));
     let msg = format!(
-        "loading speed: {} models both libraries load, best of 3 each: reference {sr:.3} s, \
+        "loading speed: {} models both libraries load, best of 2 each: reference {sr:.3} s, \
          ours {so:.3} s, ratio (ours faster by) {:.2}x\n",
         both.len(),
         sr / so
