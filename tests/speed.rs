@@ -1,7 +1,7 @@
 //! Simulation speed against the reference, side by side in one run (runs of about 0.25 s, best
 //! of 5, alternating): the models the issues name, with constraints and contacts disabled
-//! (smooth dynamics) and with full physics. Reports ratios (target/capi-tests/reports/speed.txt); a model our engine
-//! cannot run yet is reported as such. Fails only if a run breaks in an unexpected way.
+//! (smooth dynamics) and with full physics. Reports ratios (target/capi-tests/reports/
+//! speed.txt); a model our engine cannot run yet is reported as such. Fails only if a run breaks in an unexpected way.
 //! Also loading speed (loading-speed.txt): every model both libraries load, once a run.
 
 mod common;
