@@ -76,50 +76,6 @@ class Writer {
   std::vector<Rec> recs_;
 };
 
-class Reader {
- public:
-  bool load(const std::string& path) {
-    FILE* fp = std::fopen(path.c_str(), "rb");
-    if (!fp) return false;
-    char magic[4];
-    bool ok = std::fread(magic, 1, 4, fp) == 4 && !std::memcmp(magic, "RJH1", 4);
-    while (ok) {
-      uint32_t nl;
-      if (std::fread(&nl, 4, 1, fp) != 1) break;
-      Rec r;
-      r.name.resize(nl);
-      uint64_t nb = 0;
-      ok = std::fread(&r.name[0], 1, nl, fp) == nl && std::fread(&r.type, 1, 1, fp) == 1 &&
-           std::fread(&nb, 8, 1, fp) == 1;
-      if (!ok) break;
-      r.bytes.resize(nb);
-      ok = !nb || std::fread(r.bytes.data(), 1, nb, fp) == nb;
-      if (ok) {
-        index_[r.name] = recs.size();
-        recs.push_back(std::move(r));
-      }
-    }
-    std::fclose(fp);
-    return ok;
-  }
-  const Rec* get(const std::string& name) const {
-    auto it = index_.find(name);
-    return it == index_.end() ? nullptr : &recs[it->second];
-  }
-  // copies a record into p when it holds exactly nbytes
-  bool copy(const std::string& name, void* p, size_t nbytes) const {
-    const Rec* r = get(name);
-    if (!r || r->bytes.size() != nbytes) return false;
-    if (nbytes) std::memcpy(p, r->bytes.data(), nbytes);
-    return true;
-  }
-
-  std::vector<Rec> recs;
-
- private:
-  std::map<std::string, size_t> index_;
-};
-
 // A record file read one record at a time (comparisons of large models: a file can exceed
 // memory). open() indexes names, types and byte ranges; fetch() reads one record's bytes.
 class IndexedReader {
@@ -178,4 +134,36 @@ class IndexedReader {
   FILE* fp_ = nullptr;
   std::map<std::string, Ent> index_;
   std::vector<std::string> order_;
+};
+
+// A whole record file in memory.
+class Reader {
+ public:
+  bool load(const std::string& path) {
+    IndexedReader f;
+    bool ok = f.open(path);
+    for (const std::string& name : f.names()) {
+      Rec r;
+      if (!f.fetch(name, r)) return false;
+      index_[name] = recs.size();
+      recs.push_back(std::move(r));
+    }
+    return ok;
+  }
+  const Rec* get(const std::string& name) const {
+    auto it = index_.find(name);
+    return it == index_.end() ? nullptr : &recs[it->second];
+  }
+  // copies a record into p when it holds exactly nbytes
+  bool copy(const std::string& name, void* p, size_t nbytes) const {
+    const Rec* r = get(name);
+    if (!r || r->bytes.size() != nbytes) return false;
+    if (nbytes) std::memcpy(p, r->bytes.data(), nbytes);
+    return true;
+  }
+
+  std::vector<Rec> recs;
+
+ private:
+  std::map<std::string, size_t> index_;
 };

@@ -117,7 +117,7 @@ impl MsgBuf {
         std::str::from_utf8(&self.buf[..self.len]).unwrap_or("")
     }
 
-    /// NUL-terminated copy of the text for C.
+    /// The text, NUL-terminated, for C handlers.
     fn as_c(&self) -> *const c_char {
         self.buf.as_ptr() as *const c_char
     }
