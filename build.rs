@@ -45,6 +45,7 @@ fn qhull() {
 fn main() {
     println!("cargo:rerun-if-changed=src/abi");
     println!("cargo:rerun-if-changed=src/capi");
+    println!("cargo:rerun-if-changed=src/runtime");
     println!("cargo:rerun-if-changed=build.rs");
     println!("cargo:rustc-cdylib-link-arg=-Wl,-soname,libmujoco.so.2.2.2");
     qhull();
@@ -84,7 +85,12 @@ fn main() {
         &root,
         &inc,
         "mujoco.h",
-        &["src/capi/mod.rs"],
+        &[
+            "src/runtime/message.rs",
+            "src/runtime/memory.rs",
+            "src/runtime/callbacks.rs",
+            "src/capi/mod.rs",
+        ],
         &[
             "mujoco/mjexport.h",
             "mujoco/mjtnum.h",
@@ -216,6 +222,8 @@ fn header(
         "StrTable",
         "StrTable3",
         "MsgHandler",
+        "MsgBuf",
+        "ActCallback",
         "_mjPRIVATE__get_tls_error_fn",
         "_mjPRIVATE__set_tls_error_fn",
         "_mjPRIVATE__get_tls_warning_fn",

@@ -5,4 +5,5 @@ pub mod capi;
 pub mod compiler;
 pub mod engine;
 pub mod math;
+pub mod runtime;
 pub mod xml;

@@ -2,7 +2,7 @@
 //! X-macro arrays in order, each starting on a 64-byte boundary; the mjData stack apart.
 
 use super::*;
-use crate::capi::errmem::{free, malloc, malloc_zeroed};
+use crate::runtime::memory::{free, malloc, malloc_zeroed};
 use std::os::raw::c_void;
 
 const ALIGN: usize = 64;

@@ -1097,13 +1097,6 @@ pub unsafe extern "C" fn mj_contactForce(
     })
 }
 
-/// A pair of standard normal samples from C's rand(), as mju_standardNormal draws them
-/// (sensor noise must consume the same random sequence as the reference).
-pub fn standard_normal() -> (f64, f64) {
-    // SAFETY: rand() has no preconditions.
-    crate::math::misc::standard_normal(|| unsafe { libc::rand() }, libc::RAND_MAX)
-}
-
 #[no_mangle]
 pub unsafe extern "C" fn mj_sensorPos(m: *const mjModel, d: *mut mjData) {
     run("mj_sensorPos", (), m, d, engine::sensor::sensor_pos)

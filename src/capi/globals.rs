@@ -1,24 +1,9 @@
-//! Exported globals: engine callbacks, name tables, the collision function table.
+//! Exported globals: name tables, the collision function table (the callbacks live in
+//! `runtime::callbacks`).
 
 use crate::abi::*;
+use crate::runtime::callbacks;
 use std::os::raw::c_char;
-
-#[no_mangle]
-pub static mut mjcb_passive: mjfGeneric = None;
-#[no_mangle]
-pub static mut mjcb_control: mjfGeneric = None;
-#[no_mangle]
-pub static mut mjcb_contactfilter: mjfConFilt = None;
-#[no_mangle]
-pub static mut mjcb_sensor: mjfSensor = None;
-#[no_mangle]
-pub static mut mjcb_time: mjfTime = None;
-#[no_mangle]
-pub static mut mjcb_act_dyn: mjfAct = None;
-#[no_mangle]
-pub static mut mjcb_act_gain: mjfAct = None;
-#[no_mangle]
-pub static mut mjcb_act_bias: mjfAct = None;
 
 /// Pairwise collision functions by geom type, where 2.2.2 has one (upper triangle, not between
 /// planes and height fields); every entry runs the narrow phase of the geoms' own types.
@@ -174,15 +159,8 @@ pub static mjRNDSTRING: StrTable3<10> = StrTable3([
 
 /// Clears every engine callback.
 #[no_mangle]
-pub unsafe extern "C" fn mj_resetCallbacks() {
-    mjcb_passive = None;
-    mjcb_control = None;
-    mjcb_contactfilter = None;
-    mjcb_sensor = None;
-    mjcb_time = None;
-    mjcb_act_bias = None;
-    mjcb_act_gain = None;
-    mjcb_act_dyn = None;
+pub extern "C" fn mj_resetCallbacks() {
+    callbacks::reset()
 }
 
 /// Licenses are gone since 2.1: activation always succeeds.
@@ -194,80 +172,3 @@ pub extern "C" fn mj_activate(_filename: *const c_char) -> std::os::raw::c_int {
 /// Nothing to release (kept for compatibility, as in 2.2.2).
 #[no_mangle]
 pub extern "C" fn mj_deactivate() {}
-
-/// Calls the user's mjcb_control or mjcb_passive (`passive`); false when it is not set.
-pub fn call_generic(passive: bool, m: &mjModel, d: &mut mjData) -> bool {
-    // SAFETY: plain reads of the callback globals, as the C library does; the callback gets
-    // the model and data the engine works on, as in 2.2.2.
-    unsafe {
-        let cb = if passive {
-            std::ptr::addr_of!(mjcb_passive).read()
-        } else {
-            std::ptr::addr_of!(mjcb_control).read()
-        };
-        match cb {
-            Some(f) => {
-                f(m, d);
-                true
-            }
-            None => false,
-        }
-    }
-}
-
-/// Which actuator callback: dynamics, gain or bias.
-#[derive(Clone, Copy)]
-pub enum ActCallback {
-    Dyn,
-    Gain,
-    Bias,
-}
-
-/// Calls mjcb_act_dyn, mjcb_act_gain or mjcb_act_bias for actuator `i`; None when not set.
-pub fn call_act(which: ActCallback, m: &mjModel, d: &mut mjData, i: usize) -> Option<f64> {
-    // SAFETY: as in call_generic.
-    unsafe {
-        let cb = match which {
-            ActCallback::Dyn => std::ptr::addr_of!(mjcb_act_dyn).read(),
-            ActCallback::Gain => std::ptr::addr_of!(mjcb_act_gain).read(),
-            ActCallback::Bias => std::ptr::addr_of!(mjcb_act_bias).read(),
-        };
-        cb.map(|f| f(m, d, i as i32))
-    }
-}
-
-/// Calls mjcb_sensor for a stage; false when it is not set.
-pub fn call_sensor(m: &mjModel, d: &mut mjData, stage: i32) -> bool {
-    // SAFETY: as in call_generic.
-    unsafe {
-        match std::ptr::addr_of!(mjcb_sensor).read() {
-            Some(f) => {
-                f(m, d, stage);
-                true
-            }
-            None => false,
-        }
-    }
-}
-
-/// Calls mjcb_contactfilter for a geom pair (true: discard); None when it is not set.
-pub fn call_contactfilter(m: &mjModel, d: &mut mjData, g1: usize, g2: usize) -> Option<bool> {
-    // SAFETY: as in call_generic.
-    unsafe {
-        std::ptr::addr_of!(mjcb_contactfilter)
-            .read()
-            .map(|f| f(m, d, g1 as i32, g2 as i32) != 0)
-    }
-}
-
-/// Is mjcb_time set?
-pub fn time_set() -> bool {
-    // SAFETY: as in call_generic.
-    unsafe { std::ptr::addr_of!(mjcb_time).read().is_some() }
-}
-
-/// mjcb_time(), or None when it is not set.
-pub fn call_time() -> Option<f64> {
-    // SAFETY: as in call_generic.
-    unsafe { std::ptr::addr_of!(mjcb_time).read().map(|f| f()) }
-}

@@ -828,7 +828,7 @@ pub unsafe extern "C" fn mju_Halton(index: c_int, base: c_int) -> mjtNum {
 
 #[no_mangle]
 pub unsafe extern "C" fn mju_standardNormal(num2: *mut mjtNum) -> mjtNum {
-    let (a, b) = misc::standard_normal(|| libc::rand(), libc::RAND_MAX);
+    let (a, b) = crate::runtime::random::standard_normal();
     if !num2.is_null() {
         *num2 = b;
     }

@@ -165,7 +165,7 @@ unsafe fn load(filename: *const c_char, vfs: *const mjVFS) -> Result<*mut mjMode
     // from here on, as in 2.2.2's compiler, warnings go to the error buffer
     errmem::_mjPRIVATE__set_tls_warning_fn(Some(keep_warning));
     // 2.2.2's compiler seeds the C generator (later sensor noise draws from it)
-    libc::srand(123);
+    crate::runtime::random::seed(123);
     // SAFETY: all-zero bits are a valid mjModel header (null pointers, zero sizes).
     let blank: mjModel = std::mem::zeroed();
     let compiled = compiler::compile(spec, blank).map_err(|e| e.render())?;

@@ -84,7 +84,7 @@ pub fn graph(vert: &[f32]) -> Result<Option<Vec<i32>>, GraphError> {
     })?;
     let (nv, nf) = (h.vert_point.len(), h.face_top.len());
     if h.vert_point.iter().any(|&p| p < 0 || p as usize >= nvert) {
-        crate::capi::errmem::warning("Could not construct convex hull graph");
+        crate::runtime::warning("Could not construct convex hull graph");
         return Ok(None);
     }
     let mut g = vec![0i32; 2 + 3 * nv + 6 * nf];

@@ -6,8 +6,8 @@ use super::linalg::{clip, is_bad, max, mul_mat_t_vec};
 use super::support::warning;
 use super::{disabled, tick, Data, EngineError, Model, MINVAL};
 use crate::abi::*;
-use crate::capi::globals::ActCallback;
 use crate::math::misc::{muscle_bias, muscle_dynamics, muscle_gain};
+use crate::runtime::callbacks::ActCallback;
 
 const GAIN_FIXED: i32 = mjtGain_::mjGAIN_FIXED as i32;
 const GAIN_AFFINE: i32 = mjtGain_::mjGAIN_AFFINE as i32;

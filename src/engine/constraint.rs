@@ -571,7 +571,7 @@ fn sol_params(m: &Model, d: &Data, i: usize) -> ([f64; 2], [f64; 5]) {
     let mut solref: [f64; 2] = arr(&sr[2 * k..]);
     let mut solimp: [f64; 5] = arr(&si[5 * k..]);
     if (solref[0] > 0.0) ^ (solref[1] > 0.0) {
-        crate::capi::errmem::warning("mixed solref format, replacing with default");
+        crate::runtime::warning("mixed solref format, replacing with default");
         solref = [0.02, 1.0];
     }
     if !disabled(m, mjtDisableBit_::mjDSBL_REFSAFE) && solref[0] > 0.0 {

@@ -5,7 +5,7 @@
 
 use super::{Data, Model};
 use crate::abi::mjData;
-use crate::capi::globals::{self, ActCallback};
+use crate::runtime::callbacks::{self, ActCallback};
 
 /// Runs `f` on the raw data with the stack top at `top` (mjMARKSTACK for the callback).
 fn marked<R>(raw: &mut mjData, top: usize, f: impl FnOnce(&mut mjData) -> R) -> R {
@@ -19,29 +19,29 @@ fn marked<R>(raw: &mut mjData, top: usize, f: impl FnOnce(&mut mjData) -> R) -> 
 /// mjcb_control, before actuation.
 pub fn control(m: &Model, d: &mut Data) {
     let top = d.arena.used();
-    marked(d.raw, top, |raw| globals::call_generic(false, m.raw, raw));
+    marked(d.raw, top, |raw| callbacks::call_generic(false, m.raw, raw));
 }
 
 /// mjcb_passive, at the end of the passive forces.
 pub fn passive(m: &Model, d: &mut Data) {
     let top = d.arena.used();
-    marked(d.raw, top, |raw| globals::call_generic(true, m.raw, raw));
+    marked(d.raw, top, |raw| callbacks::call_generic(true, m.raw, raw));
 }
 
 /// mjcb_act_gain, mjcb_act_bias or mjcb_act_dyn of a user actuator; None when not set.
 /// Takes the raw data: actuation calls it while its scratch borrows the arena.
 pub fn act(m: &Model, raw: &mut mjData, top: usize, which: ActCallback, i: usize) -> Option<f64> {
-    marked(raw, top, |raw| globals::call_act(which, m.raw, raw, i))
+    marked(raw, top, |raw| callbacks::call_act(which, m.raw, raw, i))
 }
 
 /// mjcb_sensor for the user sensors of a stage (mjtStage).
 pub fn sensor(m: &Model, d: &mut Data, top: usize, stage: i32) {
-    marked(d.raw, top, |raw| globals::call_sensor(m.raw, raw, stage));
+    marked(d.raw, top, |raw| callbacks::call_sensor(m.raw, raw, stage));
 }
 
 /// mjcb_contactfilter of a dynamic geom pair: Some(true) discards; None when not set.
 pub fn contact_filter(m: &Model, d: &mut Data, top: usize, g1: usize, g2: usize) -> Option<bool> {
     marked(d.raw, top, |raw| {
-        globals::call_contactfilter(m.raw, raw, g1, g2)
+        callbacks::call_contactfilter(m.raw, raw, g1, g2)
     })
 }

@@ -66,7 +66,7 @@ pub fn tick(d: &mut Data, timer: mjtTimer_, start: f64) {
 
 /// The user's clock (mjcb_time), 0 without one: timer durations are differences of it.
 pub fn now() -> f64 {
-    crate::capi::globals::call_time().unwrap_or(0.0)
+    crate::runtime::callbacks::call_time().unwrap_or(0.0)
 }
 
 /// Shorthand for a "not implemented" error.

@@ -401,7 +401,7 @@ fn c_max(a: f64, b: f64) -> f64 {
 /// a random rotation of that angle for axes and quaternions. Draws from C's rand().
 fn add_noise(m: &Model, d: &mut Data, stage: i32) -> Result<(), EngineError> {
     use mjtDataType_::*;
-    let normal = crate::capi::engine::standard_normal;
+    let normal = crate::runtime::random::standard_normal;
     for i in 0..m.raw.nsensor as usize {
         let noise = m.sensor_noise()[i];
         if m.sensor_needstage()[i] != stage || noise.is_nan() || noise <= 0.0 {

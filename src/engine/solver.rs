@@ -578,7 +578,7 @@ fn eval(d: &Data, c: &mut Ctx, p: &mut Pnt) {
     let d0 = d0 + (2.0 * alpha * total[2] + total[1]);
     let mut d1 = d1 + 2.0 * total[2];
     if d1 <= 0.0 {
-        crate::capi::errmem::warning("Linesearch objective is not convex");
+        crate::runtime::warning("Linesearch objective is not convex");
         d1 = MINVAL;
     }
     p.cost = cost;

@@ -37,10 +37,10 @@ pub fn warning(d: &mut mjData, kind: i32, info: i32) -> Result<(), EngineError> 
     w.lastinfo = info;
     if w.number == 0 {
         use std::fmt::Write;
-        let mut text = crate::capi::errmem::MsgBuf::new();
+        let mut text = crate::runtime::MsgBuf::new();
         let _ = crate::math::misc::write_warning_text(&mut text, kind, info);
         let _ = write!(text, " Time = {:.4}.", d.time);
-        crate::capi::errmem::warning(text.as_str());
+        crate::runtime::warning(text.as_str());
     }
     d.warning[kind as usize].number += 1;
     Ok(())

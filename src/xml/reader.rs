@@ -66,7 +66,7 @@ pub(crate) fn read_nums<T: std::str::FromStr + From<f32> + Copy + PartialEq + In
         #[allow(clippy::eq_op)]
         let nan = out[n] != out[n];
         if nan {
-            crate::capi::errmem::warning("XML contains a 'NaN'. Please check it carefully.");
+            crate::runtime::warning("XML contains a 'NaN'. Please check it carefully.");
         }
         n += 1;
     }
@@ -76,7 +76,7 @@ pub(crate) fn read_nums<T: std::str::FromStr + From<f32> + Copy + PartialEq + In
         out[n] = out[n - 1];
         #[allow(clippy::eq_op)]
         if out[n] != out[n] {
-            crate::capi::errmem::warning("XML contains a 'NaN'. Please check it carefully.");
+            crate::runtime::warning("XML contains a 'NaN'. Please check it carefully.");
         }
         n += 1;
     }

@@ -1,0 +1,187 @@
+//! Errors and warnings with 2.2.2's semantics: the user's handlers (global and per thread),
+//! else print, log to MUJOCO_LOG.TXT and, for errors, exit.
+
+use std::cell::Cell;
+use std::ffi::CStr;
+use std::io::Write;
+use std::os::raw::{c_char, c_void};
+
+/// A C message handler (mju_user_error, mju_user_warning, the thread-local hooks).
+pub type MsgHandler = Option<unsafe extern "C" fn(*const c_char)>;
+
+#[no_mangle]
+pub static mut mju_user_error: Option<unsafe extern "C" fn(*const c_char)> = None;
+#[no_mangle]
+pub static mut mju_user_warning: Option<unsafe extern "C" fn(*const c_char)> = None;
+
+thread_local! {
+    static TLS_ERROR: Cell<MsgHandler> = const { Cell::new(None) };
+    static TLS_WARNING: Cell<MsgHandler> = const { Cell::new(None) };
+}
+
+/// This thread's error hook (taken before mju_user_error).
+pub fn tls_error_handler() -> MsgHandler {
+    TLS_ERROR.with(|c| c.get())
+}
+
+pub fn set_tls_error_handler(h: MsgHandler) {
+    TLS_ERROR.with(|c| c.set(h))
+}
+
+/// This thread's warning hook (taken before mju_user_warning).
+pub fn tls_warning_handler() -> MsgHandler {
+    TLS_WARNING.with(|c| c.get())
+}
+
+pub fn set_tls_warning_handler(h: MsgHandler) {
+    TLS_WARNING.with(|c| c.set(h))
+}
+
+/// Removes the user's error and warning handlers.
+pub fn clear_handlers() {
+    // SAFETY: plain stores to the handler globals, as the C library does.
+    unsafe {
+        mju_user_error = None;
+        mju_user_warning = None;
+    }
+}
+
+/// Appends a dated entry to MUJOCO_LOG.TXT in the working directory, as 2.2.2 does.
+pub fn write_log(kind: &str, msg: &str) {
+    if let Ok(mut f) = std::fs::OpenOptions::new()
+        .create(true)
+        .append(true)
+        .open("MUJOCO_LOG.TXT")
+    {
+        let mut date = [0 as c_char; 64];
+        let _ = f.write_all(asctime_now(&mut date));
+        let _ = write!(f, "{}: {}\n\n", kind, msg);
+    }
+}
+
+/// The local time as asctime writes it, in `buf`.
+fn asctime_now(buf: &mut [c_char; 64]) -> &[u8] {
+    // SAFETY: plain libc time formatting into a local buffer of asctime_r's required size.
+    unsafe {
+        let t = libc::time(std::ptr::null_mut());
+        let mut tm: libc::tm = std::mem::zeroed();
+        libc::localtime_r(&t, &mut tm);
+        if libc::asctime_r(&tm, buf.as_mut_ptr()).is_null() {
+            return &[];
+        }
+        CStr::from_ptr(buf.as_ptr()).to_bytes()
+    }
+}
+
+/// Writes to C's `stdout`, so output interleaves with the host program's printf as in C.
+pub fn c_stdout(text: &str) {
+    extern "C" {
+        static mut stdout: *mut libc::FILE;
+    }
+    let bytes = text.as_bytes();
+    // SAFETY: glibc's stdout stream is valid for the process lifetime.
+    unsafe {
+        libc::fwrite(bytes.as_ptr() as *const c_void, 1, bytes.len(), stdout);
+    }
+}
+
+/// Flushes C's `stdout`.
+pub fn c_stdout_flush() {
+    extern "C" {
+        static mut stdout: *mut libc::FILE;
+    }
+    // SAFETY: as in `c_stdout`.
+    unsafe {
+        libc::fflush(stdout);
+    }
+}
+
+/// A message of at most 999 bytes on the stack (2.2.2's 1000-byte buffers), NUL-terminated
+/// for C handlers: runtime warnings are reported without heap allocation.
+pub struct MsgBuf {
+    buf: [u8; 1000],
+    len: usize,
+}
+
+impl MsgBuf {
+    pub fn new() -> Self {
+        MsgBuf {
+            buf: [0; 1000],
+            len: 0,
+        }
+    }
+
+    /// The text written so far (truncation keeps whole characters).
+    pub fn as_str(&self) -> &str {
+        std::str::from_utf8(&self.buf[..self.len]).unwrap_or("")
+    }
+
+    /// The text, NUL-terminated, for C handlers.
+    fn as_c(&self) -> *const c_char {
+        self.buf.as_ptr() as *const c_char
+    }
+}
+
+impl Default for MsgBuf {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl std::fmt::Write for MsgBuf {
+    fn write_str(&mut self, s: &str) -> std::fmt::Result {
+        for c in s.chars().filter(|&c| c != '\0') {
+            let n = c.len_utf8();
+            if self.len + n > self.buf.len() - 1 {
+                break;
+            }
+            c.encode_utf8(&mut self.buf[self.len..self.len + n]);
+            self.len += n;
+        }
+        self.buf[self.len] = 0;
+        Ok(())
+    }
+}
+
+fn c_message(msg: &str) -> MsgBuf {
+    let mut b = MsgBuf::new();
+    let _ = std::fmt::Write::write_str(&mut b, msg);
+    b
+}
+
+/// Reports a fatal error: thread-local hook, user handler, or print, log and exit.
+pub fn error(msg: &str) {
+    let text = c_message(msg);
+    // SAFETY: handlers are C callbacks taking a NUL-terminated string.
+    unsafe {
+        if let Some(h) = tls_error_handler() {
+            h(text.as_c());
+        } else if let Some(h) = mju_user_error {
+            h(text.as_c());
+        } else {
+            write_log("ERROR", msg);
+            c_stdout(&format!("ERROR: {msg}\n\nPress Enter to exit ..."));
+            c_stdout_flush();
+            libc::getchar();
+            libc::exit(1);
+        }
+    }
+}
+
+/// Reports a warning: thread-local hook, user handler, or print and log.
+pub fn warning(msg: &str) {
+    let text = c_message(msg);
+    // SAFETY: as in `error`.
+    unsafe {
+        if let Some(h) = tls_warning_handler() {
+            h(text.as_c());
+        } else if let Some(h) = mju_user_warning {
+            h(text.as_c());
+        } else {
+            write_log("WARNING", msg);
+            c_stdout("WARNING: ");
+            c_stdout(msg);
+            c_stdout("\n\n");
+        }
+    }
+}
