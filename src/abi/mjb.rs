@@ -24,21 +24,51 @@ fn header() -> [i32; 4] {
 
 /// Serializes a model.
 pub fn save(m: &mjModel) -> Vec<u8> {
-    let (nint, _) = model_counts();
     let mut out = Vec::with_capacity(alloc::size_model(m) as usize);
+    write_parts(m, |b| out.extend_from_slice(b));
+    out
+}
+
+/// Hands the serialized model to `put` piece by piece, in file order (no whole image in memory).
+pub fn write_parts(m: &mjModel, mut put: impl FnMut(&[u8])) {
+    let (nint, _) = model_counts();
     for v in header() {
-        out.extend_from_slice(&v.to_ne_bytes());
+        put(&v.to_ne_bytes());
     }
-    out.extend_from_slice(&bytes_of(m)[..nint * 4]);
-    out.extend_from_slice(bytes_of(&m.opt));
-    out.extend_from_slice(bytes_of(&m.vis));
-    out.extend_from_slice(bytes_of(&m.stat));
+    put(&bytes_of(m)[..nint * 4]);
+    put(bytes_of(&m.opt));
+    put(bytes_of(&m.vis));
+    put(bytes_of(&m.stat));
     // SAFETY: the buffer holds nbuffer bytes.
     let buf = unsafe { std::slice::from_raw_parts(m.buffer as *const u8, m.nbuffer as usize) };
     for (_, off, len) in model_spans(m) {
-        out.extend_from_slice(&buf[off..off + len]);
+        put(&buf[off..off + len]);
     }
-    out
+}
+
+/// A 128-bit fingerprint of the serialized model (two multiplicative lanes over its 8-byte
+/// words): tells whether a model still holds what was loaded without keeping a copy of it.
+pub fn digest(m: &mjModel) -> [u64; 2] {
+    let mut h = [0xcbf2_9ce4_8422_2325u64, 0x6c62_272e_07bb_0142u64];
+    let mut mix = |w: u64| {
+        h[0] = (h[0] ^ w)
+            .wrapping_mul(0x0000_0100_0000_01b3)
+            .rotate_left(23);
+        h[1] = (h[1] ^ w)
+            .wrapping_mul(0x9e37_79b9_7f4a_7c15)
+            .rotate_left(31);
+    };
+    write_parts(m, |bytes| {
+        let words = bytes.chunks_exact(8);
+        let tail = words.remainder();
+        for w in words {
+            mix(u64::from_ne_bytes(w.try_into().unwrap()));
+        }
+        for &b in tail {
+            mix(b as u64 | 1 << 63);
+        }
+    });
+    h
 }
 
 struct Reader<'a> {

@@ -188,8 +188,8 @@ pub unsafe extern "C" fn mj_saveModel(
     let Some(m) = m.as_ref() else {
         return;
     };
-    let image = mjb::save(m);
     if !buffer.is_null() {
+        let image = mjb::save(m);
         if image.len() > buffer_sz.max(0) as usize {
             error("Attempting to write outside model buffer");
             return;
@@ -197,7 +197,18 @@ pub unsafe extern "C" fn mj_saveModel(
         std::ptr::copy_nonoverlapping(image.as_ptr(), buffer as *mut u8, image.len());
     } else if !filename.is_null() {
         let name = cstr(filename);
-        if std::fs::write(&*name, &image).is_err() {
+        // streamed to the file, as 2.2.2 writes it (no second copy of a large model in memory)
+        let written = std::fs::File::create(&*name).and_then(|f| {
+            let mut w = std::io::BufWriter::new(f);
+            let mut result = Ok(());
+            mjb::write_parts(m, |b| {
+                if result.is_ok() {
+                    result = std::io::Write::write_all(&mut w, b);
+                }
+            });
+            result.and_then(|_| std::io::Write::flush(&mut w))
+        });
+        if written.is_err() {
             warning(&format!("Could not open file '{name}'"));
         }
     }

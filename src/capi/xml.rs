@@ -40,11 +40,11 @@ unsafe fn load_text(filename: &str, vfs: *const mjVFS) -> Result<Vec<u8>, String
     })
 }
 
-/// The last model loaded, as 2.2.2 keeps it for `mj_saveLastXML`: its MJCF tree and the MJB
-/// image of the model compiled from it.
+/// The last model loaded, as 2.2.2 keeps it for `mj_saveLastXML`: its MJCF tree and the
+/// fingerprint of the model compiled from it.
 struct LastModel {
     mjcf: tree::Element,
-    image: Vec<u8>,
+    digest: [u64; 2],
 }
 
 static LAST_MODEL: Mutex<Option<LastModel>> = Mutex::new(None);
@@ -194,7 +194,7 @@ unsafe fn load(filename: *const c_char, vfs: *const mjVFS) -> Result<*mut mjMode
     if let Ok(mut last) = LAST_MODEL.lock() {
         *last = Some(LastModel {
             mjcf,
-            image: crate::abi::mjb::save(&*m),
+            digest: crate::abi::mjb::digest(&*m),
         });
     }
     Ok(m)
@@ -242,7 +242,7 @@ pub unsafe extern "C" fn mj_saveLastXML(
             // model as loaded, so a changed (or another) model is refused
             let same = m
                 .as_ref()
-                .is_none_or(|m| crate::abi::mjb::save(m) == l.image);
+                .is_none_or(|m| crate::abi::mjb::digest(m) == l.digest);
             (writer::to_text(&l.mjcf), same)
         }),
         Err(_) => None,
