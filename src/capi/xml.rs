@@ -168,7 +168,7 @@ unsafe fn load(filename: *const c_char, vfs: *const mjVFS) -> Result<*mut mjMode
     crate::runtime::random::seed(123);
     // SAFETY: all-zero bits are a valid mjModel header (null pointers, zero sizes).
     let blank: mjModel = std::mem::zeroed();
-    let compiled = compiler::compile(spec, blank).map_err(|e| e.render())?;
+    let mut compiled = compiler::compile(spec, blank).map_err(|e| e.render())?;
     let m = make_model(&compiled.header).map_err(|e| format!("Error: {e}"))?;
     (*m).opt = compiled.option;
     (*m).vis = compiled.visual;
@@ -177,6 +177,7 @@ unsafe fn load(filename: *const c_char, vfs: *const mjVFS) -> Result<*mut mjMode
         let mut mm = ModelMut::new(&mut *m);
         compiler::fill(&compiled, &mut mm);
     }
+    compiler::release_bulk(&mut compiled);
     // as 2.2.2's compiler: one mjData serves mj_setConst, the length ranges and the test step
     let d = match crate::capi::io::new_data(&*m) {
         Ok(d) => d,

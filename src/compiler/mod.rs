@@ -67,6 +67,11 @@ pub fn fill(c: &Compiled, m: &mut ModelMut) {
     c.fill(m);
 }
 
+/// Frees what `fill` copied into the model and the later steps do not read (load-time memory).
+pub fn release_bulk(c: &mut Compiled) {
+    c.release_bulk();
+}
+
 /// Joint stiffness and damping from `springdamper` (time constant, damping ratio), using the
 /// inverse weights mj_setConst computed.
 pub fn auto_spring_damper(c: &Compiled, m: &mut ModelMut) {

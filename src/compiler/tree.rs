@@ -1969,6 +1969,15 @@ impl Compiled {
         }
     }
 
+    /// Frees the bulk arrays `fill` has copied into the model (meshes, skins, textures, height
+    /// fields); what the compiler's later steps read stays.
+    pub fn release_bulk(&mut self) {
+        self.meshes = Vec::new();
+        self.skins = Vec::new();
+        self.textures = Vec::new();
+        self.hfields = Vec::new();
+    }
+
     pub fn fill(&self, m: &mut ModelMut) {
         let h = &self.header;
         // names
