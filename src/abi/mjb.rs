@@ -71,15 +71,37 @@ pub fn digest(m: &mjModel) -> [u64; 2] {
     h
 }
 
+/// Why an MJB image was refused: 2.2.2 warns about a bad file and reports a read past the end of
+/// a memory buffer (VFS) as an error.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum LoadError {
+    Warning(String),
+    Error(String),
+}
+
+impl LoadError {
+    pub fn message(&self) -> &str {
+        match self {
+            LoadError::Warning(s) | LoadError::Error(s) => s,
+        }
+    }
+}
+
 struct Reader<'a> {
     data: &'a [u8],
     pos: usize,
+    /// from a memory buffer (VFS) rather than a file
+    buffer: bool,
 }
 
 impl Reader<'_> {
-    fn take(&mut self, n: usize, what: &str) -> Result<&[u8], String> {
+    fn take(&mut self, n: usize, what: &str) -> Result<&[u8], LoadError> {
         if self.pos + n > self.data.len() {
-            return Err(what.to_string());
+            return Err(if self.buffer {
+                LoadError::Error("Attempting to read outside model buffer".into())
+            } else {
+                LoadError::Warning(what.to_string())
+            });
         }
         let s = &self.data[self.pos..self.pos + n];
         self.pos += n;
@@ -94,10 +116,16 @@ fn fill<T>(dst: &mut T, src: &[u8]) {
     unsafe { std::ptr::copy_nonoverlapping(src.as_ptr(), dst as *mut T as *mut u8, src.len()) }
 }
 
-/// Parses an MJB image into a new model; errors carry 2.2.2's warning texts.
-pub fn load(data: &[u8]) -> Result<*mut mjModel, String> {
+/// Parses an MJB image (a file's contents, or a memory buffer when `buffer`) into a new model;
+/// errors carry 2.2.2's texts. A buffer may hold more than the model, as 2.2.2 reads it.
+pub fn load(data: &[u8], buffer: bool) -> Result<*mut mjModel, LoadError> {
     let (nint, _) = model_counts();
-    let mut r = Reader { data, pos: 0 };
+    let warn = |s: &str| LoadError::Warning(s.to_string());
+    let mut r = Reader {
+        data,
+        pos: 0,
+        buffer,
+    };
     let head = r.take(16, "Model file has an incomplete header")?;
     let expected = header();
     let msgs = [
@@ -109,7 +137,7 @@ pub fn load(data: &[u8]) -> Result<*mut mjModel, String> {
     for i in 0..4 {
         let v = i32::from_ne_bytes(head[4 * i..4 * i + 4].try_into().unwrap());
         if v != expected[i] {
-            return Err(msgs[i].into());
+            return Err(warn(msgs[i]));
         }
     }
     let ints = r
@@ -118,15 +146,15 @@ pub fn load(data: &[u8]) -> Result<*mut mjModel, String> {
     // SAFETY: all-zero bits are a valid mjModel; only the int prefix is filled.
     let mut sizes: mjModel = unsafe { std::mem::zeroed() };
     fill(&mut sizes, &ints);
-    let m = make_model(&sizes).map_err(|_| "Corrupted model, wrong size parameters".to_string())?;
+    let m = make_model(&sizes).map_err(|_| warn("Corrupted model, wrong size parameters"))?;
     // SAFETY: m is a fresh model; its buffer has nbuffer bytes.
     unsafe {
         let mm = &mut *m;
         if mm.nbuffer != sizes.nbuffer {
             alloc::delete_model(m);
-            return Err("Corrupted model, wrong size parameters".into());
+            return Err(warn("Corrupted model, wrong size parameters"));
         }
-        let result = (|| -> Result<(), String> {
+        let result = (|| -> Result<(), LoadError> {
             fill(
                 &mut mm.opt,
                 r.take(
@@ -154,13 +182,13 @@ pub fn load(data: &[u8]) -> Result<*mut mjModel, String> {
                     r.take(len, "Model file does not contain a large enough buffer")?,
                 );
             }
-            if r.pos != data.len() {
-                return Err("Model file is too large".into());
+            if !buffer && r.pos != data.len() {
+                return Err(warn("Model file is too large"));
             }
-            match validate::validate_references(view::Model::new(mm)) {
-                Some(e) => Err(e.into()),
-                None => Ok(()),
+            if let Some(e) = validate::validate_references(view::Model::new(mm)) {
+                return Err(warn(e));
             }
+            consistency::check(view::Model::new(mm)).map_err(LoadError::Warning)
         })();
         if let Err(e) = result {
             alloc::delete_model(m);

@@ -162,20 +162,24 @@ pub unsafe extern "C" fn mj_stackAlloc(d: *mut mjData, size: c_int) -> *mut mjtN
     p
 }
 
-/// Reads a file from the VFS when it holds one by that name, else from disk.
-pub unsafe fn read_file(filename: &str, vfs: *const mjVFS) -> Option<Vec<u8>> {
+/// A file's contents from the VFS when it holds one by that name (borrowed, `true`), else from
+/// disk.
+pub unsafe fn read_file<'a>(
+    filename: &str,
+    vfs: *const mjVFS,
+) -> Option<(std::borrow::Cow<'a, [u8]>, bool)> {
     if let Some(vfs) = vfs.as_ref() {
         if let Some(i) = vfs_find(vfs, filename) {
             let n = vfs.filesize[i].max(0) as usize;
             let p = vfs.filedata[i] as *const u8;
             return Some(if p.is_null() {
-                Vec::new()
+                (Vec::new().into(), true)
             } else {
-                std::slice::from_raw_parts(p, n).to_vec()
+                (std::slice::from_raw_parts(p, n).into(), true)
             });
         }
     }
-    std::fs::read(filename).ok()
+    std::fs::read(filename).ok().map(|b| (b.into(), false))
 }
 
 #[no_mangle]
@@ -217,17 +221,23 @@ pub unsafe extern "C" fn mj_saveModel(
 #[no_mangle]
 pub unsafe extern "C" fn mj_loadModel(filename: *const c_char, vfs: *const mjVFS) -> *mut mjModel {
     let name = cstr(filename);
-    let Some(bytes) = read_file(&name, vfs) else {
+    let Some((bytes, buffer)) = read_file(&name, vfs) else {
         warning(&format!("Could not open file '{name}'"));
         return std::ptr::null_mut();
     };
-    match mjb::load(&bytes) {
-        Ok(m) => m,
-        Err(e) => {
-            warning(&e);
-            std::ptr::null_mut()
-        }
-    }
+    super::guard("mj_loadModel", std::ptr::null_mut(), || {
+        Ok(match mjb::load(&bytes, buffer) {
+            Ok(m) => m,
+            Err(mjb::LoadError::Warning(e)) => {
+                warning(&e);
+                std::ptr::null_mut()
+            }
+            Err(mjb::LoadError::Error(e)) => {
+                error(&e);
+                std::ptr::null_mut()
+            }
+        })
+    })
 }
 
 /// The VFS key of a file name: no directory, lower case.
