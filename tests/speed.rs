@@ -1,7 +1,8 @@
 //! Simulation speed against the reference, side by side in one run (runs of about 0.25 s, best
 //! of 5, alternating): the models the issues name, with constraints and contacts disabled
-//! (smooth dynamics) and with full physics. Reports ratios (target/capi-tests/reports/
-//! speed.txt); a model our engine cannot run yet is reported as such. Fails only if a run breaks in an unexpected way.
+//! (smooth dynamics) and with full physics; MuJoCo 4.0.0 (its PyPI wheel, fetched by run-all)
+//! beside them when present. Reports ratios (target/capi-tests/reports/speed.txt); a model our
+//! engine cannot run yet is reported as such. Fails only if a run breaks in an unexpected way.
 //! Also loading speed (loading-speed.txt): every model both libraries load, once a run.
 
 mod common;
@@ -46,6 +47,7 @@ fn speed_against_the_reference() {
     let src = [root().join("capi-tests/bench.c")];
     let reference = compile_c(&src, "bench", Lib::Ref);
     let ours = compile_c(&src, "bench", Lib::Ours);
+    let v4 = compile_c_v4(&src, "bench");
     let models = [
         ("arm3", "arm3.xml", "models"),
         ("humanoid", "humanoid.xml", "humanoid/"),
@@ -65,7 +67,7 @@ fn speed_against_the_reference() {
                 lines.push(format!("    {name:<12} model not found"));
                 continue;
             };
-            let (mut best_ref, mut best_ours) = (0.0f64, 0.0f64);
+            let (mut best_ref, mut best_ours, mut best_v4) = (0.0f64, 0.0f64, 0.0f64);
             let mut failure = None;
             // the same number of steps for both, from the reference's rate
             let steps = match rate(&reference, CALIBRATION_STEPS, flags, &path) {
@@ -90,18 +92,34 @@ fn speed_against_the_reference() {
                 if failure.is_some() {
                     break;
                 }
+                if let Some(v4) = &v4 {
+                    // 4.0.0 may refuse a 2.2.2 model: its column then stays empty
+                    if let Ok(r) = rate(v4, steps, flags, &path) {
+                        best_v4 = best_v4.max(r);
+                    }
+                }
             }
             lines.push(match failure {
                 Some(f) => format!("    {name:<12} {f}"),
                 None => format!(
-                    "    {name:<12} {steps:>6} steps  reference {best_ref:>10.0} steps/s  ours {best_ours:>10.0} steps/s  ratio {:.2}x",
-                    best_ours / best_ref
+                    "    {name:<12} {steps:>6} steps  reference {best_ref:>10.0} steps/s  ours {best_ours:>10.0} steps/s  ratio {:.2}x{}",
+                    best_ours / best_ref,
+                    if best_v4 > 0.0 {
+                        format!("  4.0.0 {best_v4:>10.0} steps/s  ours/4.0.0 {:.2}x", best_ours / best_v4)
+                    } else {
+                        String::new()
+                    }
                 ),
             });
         }
     }
+    let v4_note = if v4.is_some() {
+        "; MuJoCo 4.0.0 from its PyPI wheel beside them"
+    } else {
+        "; MuJoCo 4.0.0 not fetched (capi-tests/run-all fetches mujoco-core 4.0.0): no 4.0.0 column"
+    };
     let msg = format!(
-        "speed (runs of about {SAMPLE_SECONDS} s, best of 5, alternating, ours/reference):\n{}\n",
+        "speed (runs of about {SAMPLE_SECONDS} s, best of 5, alternating, ours/reference{v4_note}):\n{}\n",
         lines.join("\n")
     );
     report("speed", &msg);

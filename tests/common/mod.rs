@@ -134,6 +134,40 @@ pub fn compile_c(srcs: &[PathBuf], name: &str, lib: Lib) -> PathBuf {
     out
 }
 
+/// MuJoCo 4.0.0 from its PyPI wheel (mujoco-core), unpacked by capi-tests/run-all into
+/// target/third-party: (include dir, library file). For speed comparisons only.
+pub fn v4_lib() -> Option<(PathBuf, PathBuf)> {
+    let dir = target_dir().join("third-party/mujoco-core-4.0.0/mujoco");
+    let (inc, lib) = (dir.join("include"), dir.join("libmujoco.so.4.0.0"));
+    (inc.join("mujoco/mujoco.h").is_file() && lib.is_file()).then_some((inc, lib))
+}
+
+/// Compiles C sources against MuJoCo 4.0.0's headers and library; None when it is not there.
+pub fn compile_c_v4(srcs: &[PathBuf], name: &str) -> Option<PathBuf> {
+    let (inc, lib) = v4_lib()?;
+    let out = work_dir("bin").join(format!("{name}-v4"));
+    let o = Command::new("gcc")
+        .args(["-std=c11", "-O2", "-o"])
+        .arg(&out)
+        .args(srcs)
+        .arg("-I")
+        .arg(&inc)
+        .arg(&lib)
+        .arg(format!(
+            "-Wl,--disable-new-dtags,-rpath,{}",
+            lib.parent().unwrap().display()
+        ))
+        .arg("-lm")
+        .output()
+        .expect("gcc not found: install build-essential");
+    assert!(
+        o.status.success(),
+        "compiling {name} against MuJoCo 4.0.0 failed:\n{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    Some(out)
+}
+
 /// Runs a command with stdin closed and a time limit (coreutils `timeout`), without the
 /// LD_LIBRARY_PATH cargo sets for tests (it would point libmujoco.so.2.2.2 at ours).
 pub fn run(prog: &Path, args: &[&str], envs: &[(&str, &str)], seconds: u32) -> Output {

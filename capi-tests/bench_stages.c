@@ -1,0 +1,69 @@
+// Per-stage simulation time, built against rujoco, MuJoCo 2.2.2 and MuJoCo 4.0.0
+// (capi-tests/bench):
+//   bench_stages STEPS DISABLEFLAGS FILE
+// loads FILE, ors DISABLEFLAGS into opt.disableflags, resets (keyframe 0 if any), runs 100
+// driven warm-up steps, then STEPS timed steps ("steps/s <rate>"), then STEPS more with the
+// library's stage timers on (mjcb_time) and prints "stage <name> <microseconds per step>" for
+// each timer; "error <message>" when the library stops with mju_error.
+#include "child.h"  // first: it sets the feature macros
+#include <stdlib.h>
+#include <time.h>
+
+static void on_error(const char* msg) {
+  printf("error %s\n", msg);
+  exit(0);
+}
+
+static void quiet(const char* msg) { (void)msg; }
+
+static double now(void) {
+  struct timespec t;
+  clock_gettime(CLOCK_MONOTONIC, &t);
+  return t.tv_sec + 1e-9 * t.tv_nsec;
+}
+
+static mjtNum now_us(void) { return 1e6 * now(); }
+
+int main(int argc, char** argv) {
+  if (argc != 4) {
+    fprintf(stderr, "usage: bench_stages STEPS DISABLEFLAGS FILE\n");
+    return 2;
+  }
+  mju_user_error = on_error;
+  mju_user_warning = quiet;
+  int steps = atoi(argv[1]);
+  char err[1000] = "";
+  mjModel* m = mj_loadXML(argv[3], NULL, err, sizeof err);
+  if (!m) {
+    printf("error %s\n", err);
+    return 0;
+  }
+  m->opt.disableflags |= atoi(argv[2]);
+  mjData* d = mj_makeData(m);
+  if (m->nkey > 0) mj_resetDataKeyframe(m, d, 0);
+  for (int s = 0; s < 100; s++) {
+    drive_controls(m, d, s);
+    mj_step(m, d);
+  }
+  double t0 = now();
+  for (int s = 0; s < steps; s++) {
+    drive_controls(m, d, s);
+    mj_step(m, d);
+  }
+  printf("steps/s %.1f\n", steps / (now() - t0));
+  mjcb_time = now_us;
+  for (int i = 0; i < mjNTIMER; i++) {
+    d->timer[i].duration = 0;
+    d->timer[i].number = 0;
+  }
+  for (int s = 0; s < steps; s++) {
+    drive_controls(m, d, s);
+    mj_step(m, d);
+  }
+  for (int i = 0; i < mjNTIMER; i++) {
+    printf("stage %s %.3f\n", mjTIMERSTRING[i], d->timer[i].duration / steps);
+  }
+  mj_deleteData(d);
+  mj_deleteModel(m);
+  return 0;
+}
