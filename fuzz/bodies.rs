@@ -138,8 +138,11 @@ pub fn png(data: &[u8]) -> bool {
     )
 }
 
+/// A target's body: true when the input loaded.
+pub type Body = fn(&[u8]) -> bool;
+
 /// The targets by name, for the drivers.
-pub const TARGETS: [(&str, fn(&[u8]) -> bool); 7] = [
+pub const TARGETS: [(&str, Body); 7] = [
     ("xml_loader", xml),
     ("mjb_loader", mjb),
     ("mesh_stl", |d| mesh("stl", d)),
