@@ -27,10 +27,18 @@ extern "C" {
 /// handler would end the process).
 unsafe extern "C" fn quiet(_msg: *const c_char) {}
 
+/// An error reported as "internal error" is a panic the library caught: a finding.
+unsafe extern "C" fn on_error(msg: *const c_char) {
+    let text = std::ffi::CStr::from_ptr(msg).to_string_lossy();
+    if text.contains("internal error") {
+        panic!("{text}");
+    }
+}
+
 fn handlers() {
     // SAFETY: plain stores to the library's handler globals, before any call.
     unsafe {
-        mju_user_error = Some(quiet);
+        mju_user_error = Some(on_error);
         mju_user_warning = Some(quiet);
     }
 }
@@ -91,6 +99,9 @@ fn load_xml(main: &str, files: &[(&str, &[u8])]) -> bool {
     let mut err = [0 as c_char; 1000];
     // SAFETY: valid VFS and error buffer.
     let m = unsafe { mj_loadXML(name.as_ptr(), &*vfs.0, err.as_mut_ptr(), err.len() as c_int) };
+    // SAFETY: the loader NUL-terminates the buffer it was given.
+    let text = unsafe { std::ffi::CStr::from_ptr(err.as_ptr()) }.to_string_lossy();
+    assert!(!text.contains("internal error"), "{text}");
     step_and_free(m)
 }
 

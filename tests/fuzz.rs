@@ -1,7 +1,8 @@
 //! Fuzzing entry points under the test suite, for a bounded time: the cargo-fuzz targets' bodies
 //! (fuzz/bodies.rs: MJCF, MJB, STL, OBJ, MSH, PNG and URDF through the C API's loaders, then
 //! steps) run over their seeds (fuzz/seeds) and deterministic mutations of them for a few
-//! seconds each, in this process: a crash, abort or hang fails the test. For coverage-guided
+//! seconds each, in this process, after the inputs libFuzzer once found crashing
+//! (fuzz/regressions): a crash, abort or hang fails the test. For coverage-guided
 //! runs of any length with libFuzzer: `cargo +nightly fuzz run TARGET` in fuzz/ (README).
 
 #[path = "../fuzz/bodies.rs"]
@@ -97,10 +98,13 @@ fn mutate(rng: &mut Rng, seed: &[u8], other: &[u8]) -> Vec<u8> {
     b
 }
 
-fn seeds(target: &str) -> Vec<Vec<u8>> {
-    let dir = root().join("fuzz/seeds").join(target);
+/// The files of fuzz/`kind`/`target` (seeds: valid inputs; regressions: inputs that once
+/// crashed, none of which may load or crash now).
+fn inputs(kind: &str, target: &str) -> Vec<Vec<u8>> {
+    let dir = root().join("fuzz").join(kind).join(target);
     let mut files: Vec<_> = std::fs::read_dir(&dir)
-        .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
+        .into_iter()
+        .flatten()
         .flatten()
         .map(|e| e.path())
         .collect();
@@ -119,10 +123,14 @@ fn fuzz_targets_bounded_run() {
     });
     let mut lines = Vec::new();
     for (k, (name, body)) in bodies::TARGETS.iter().enumerate() {
-        let seeds = seeds(name);
+        let seeds = inputs("seeds", name);
         assert!(!seeds.is_empty(), "no seeds for {name}");
         for (i, s) in seeds.iter().enumerate() {
             assert!(body(s), "{name}: seed {i} does not load");
+        }
+        let regressions = inputs("regressions", name);
+        for r in &regressions {
+            body(r);
         }
         let mut rng = Rng(0x5eed_0000 + k as u64);
         let (mut runs, mut loaded) = (0u64, 0u64);
@@ -135,8 +143,9 @@ fn fuzz_targets_bounded_run() {
             runs += 1;
         }
         lines.push(format!(
-            "  {name:<11} {} seeds, {runs} mutated inputs in {SECONDS} s, {loaded} loaded and stepped",
-            seeds.len()
+            "  {name:<11} {} seeds, {} regressions, {runs} mutated inputs in {SECONDS} s, {loaded} loaded and stepped",
+            seeds.len(),
+            regressions.len()
         ));
     }
     let msg = format!(

@@ -29,6 +29,11 @@ pub fn decode_png(bytes: &[u8], grey: bool) -> Result<Image, String> {
     let size = reader
         .output_buffer_size()
         .ok_or_else(|| "image too large".to_string())?;
+    // deflate expands at most about 1032:1: a header asking for more pixels than the file's
+    // data can hold is corrupt (and its buffer could exceed memory)
+    if size / 1032 > bytes.len() + 4096 {
+        return Err("image data too small for the image size in the header".into());
+    }
     let mut buf = vec![0u8; size];
     let info = reader.next_frame(&mut buf).map_err(|e| e.to_string())?;
     let (width, height) = (info.width as usize, info.height as usize);

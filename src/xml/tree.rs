@@ -153,8 +153,9 @@ pub fn parse(text: &str) -> Result<Element, String> {
         // the tag starts at the first '<' of the bytes this event consumed
         let tag_line = || {
             lines.line(
-                text[before.min(text.len())..]
-                    .find('<')
+                text.as_bytes()[before.min(text.len())..]
+                    .iter()
+                    .position(|&b| b == b'<')
                     .map_or(before, |p| before + p),
             )
         };
