@@ -91,8 +91,7 @@ pub struct Compiled {
     /// (constraint, object ids)
     equalities: Vec<(Equality, [i32; 2])>,
     tendons: Vec<CTendon>,
-    /// (mjtTexture, width, height, RGB bytes)
-    textures: Vec<(i32, i32, i32, Vec<u8>)>,
+    textures: Vec<textures::TexImage>,
     texture_names: Vec<String>,
     hfields: Vec<HField>,
     skins: Vec<super::skin::CSkin>,

@@ -147,7 +147,7 @@ pub(super) fn compile(
                 ]
             }
             5 => [
-                find_body(&bodies, &a.target).ok_or_else(|| missing(&a.target))? as i32,
+                find_body(bodies, &a.target).ok_or_else(|| missing(&a.target))? as i32,
                 -1,
             ],
             3 => [

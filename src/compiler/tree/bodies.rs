@@ -44,14 +44,14 @@ pub(super) fn compile(
             &b.spec.alt.clone(),
             &mut b.quat,
             Some(&mut b.inertia),
-            &settings,
+            settings,
         )
         .map_err(|e| berr(format!("error '{e}' in frame alternative")))?;
         alt_set(
             &b.spec.ialt.clone(),
             &mut b.iquat,
             Some(&mut b.inertia),
-            &settings,
+            settings,
         )
         .map_err(|e| berr(format!("error '{e}' in inertia alternative")))?;
         for c in children {
@@ -79,7 +79,7 @@ pub(super) fn compile(
                 fitaabb: opts.fitaabb,
                 exactmeshinertia: opts.exactmeshinertia,
             };
-            let out = compile_geom(g, gid, b.weldid == 0, infer, &assets, &settings).map_err(
+            let out = compile_geom(g, gid, b.weldid == 0, infer, &assets, settings).map_err(
                 |e| match e {
                     GeomError::Geom(m) => CError::at(m, &g.name, gid, g.line),
                     GeomError::Mesh(m) => {
@@ -106,7 +106,7 @@ pub(super) fn compile(
                 .map(|g| &g.out)
                 .collect();
             if let Some((ipos, iquat, mass, inertia)) =
-                geom_frame(&sel, &settings).map_err(|e| CError::at(e.msg, &name, i, line))?
+                geom_frame(&sel, settings).map_err(|e| CError::at(e.msg, &name, i, line))?
             {
                 (b.ipos, b.iquat, b.mass, b.inertia) = (ipos, iquat, mass, inertia);
             }
@@ -182,7 +182,7 @@ pub(super) fn compile(
                 return Err(CError::at(m, &s.name, sid, s.line));
             }
             let out =
-                compile_site(s, sid, &settings).map_err(|m| CError::at(m, &s.name, sid, s.line))?;
+                compile_site(s, sid, settings).map_err(|m| CError::at(m, &s.name, sid, s.line))?;
             sites[sid] = Some(FSite {
                 spec: s.clone(),
                 body: i,
@@ -190,10 +190,10 @@ pub(super) fn compile(
             });
         }
         for cid in bodies[i].cameras.clone() {
-            compile_camera(&mut cameras[cid].0, cid, i, &bodies, nuser[4], &settings)?;
+            compile_camera(&mut cameras[cid].0, cid, i, bodies, nuser[4], settings)?;
         }
         for lid in bodies[i].lights.clone() {
-            compile_light(&mut lights[lid].0, lid, i, &bodies)?;
+            compile_light(&mut lights[lid].0, lid, i, bodies)?;
         }
 
         // frames so far are in world coordinates when coordinate="global": make them local

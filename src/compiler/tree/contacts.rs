@@ -38,7 +38,7 @@ pub(super) fn compile(
     }
     let mut excludes = Vec::new();
     for (id, e) in exclude_specs.into_iter().enumerate() {
-        let find = |n: &str| find_body(&bodies, n);
+        let find = |n: &str| find_body(bodies, n);
         let missing = |n: &str| {
             CError::at(
                 format!("body '{n}' not found in bodypair {id}"),

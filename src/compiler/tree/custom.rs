@@ -42,7 +42,7 @@ impl Compiled {
                     names.position(|n| *n == oname.as_str())
                 };
                 let found = match kind {
-                    1 | 2 => find_body(&bodies, oname),
+                    1 | 2 => find_body(bodies, oname),
                     3 => by_name(
                         joints
                             .iter()

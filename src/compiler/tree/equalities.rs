@@ -15,7 +15,7 @@ pub(super) fn compile(
         let err = |m: String| CError::at(m, &name, id, e.line);
         let find = |n: &str| -> Option<usize> {
             match e.kind {
-                0 | 1 => find_body(&bodies, n),
+                0 | 1 => find_body(bodies, n),
                 2 => joints.iter().position(|j| j.spec.name == n),
                 3 => tendons.iter().position(|t| t.name == n),
                 _ => None,

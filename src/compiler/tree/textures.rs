@@ -3,8 +3,10 @@
 
 use super::*;
 
-/// Textures as (mjtTexture, width, height, RGB bytes).
-pub(super) fn compile(textures: &[Texture]) -> Result<Vec<(i32, i32, i32, Vec<u8>)>, CError> {
+/// A texture image: (mjtTexture, width, height, RGB bytes).
+pub(super) type TexImage = (i32, i32, i32, Vec<u8>);
+
+pub(super) fn compile(textures: &[Texture]) -> Result<Vec<TexImage>, CError> {
     // textures (random marks draw from the C generator seeded as 2.2.2 seeds it)
     let mut rng = crate::compiler::texture::CRand::new(123);
     let mut images = Vec::new();
