@@ -224,6 +224,7 @@ pub fn compile(mut spec: ModelSpec, h: mjModel) -> Result<Compiled, CError> {
         keys.push(Key::default());
     }
 
+    // repeated names, then user data sizes
     names::check_all(
         &spec, &bodies, &joints, &gspecs, &sspecs, &cameras, &lights, &actuators, &keys,
     )?;
@@ -242,6 +243,7 @@ pub fn compile(mut spec: ModelSpec, h: mjModel) -> Result<Compiled, CError> {
         user_len(sensors.iter().map(|s| s.user.len()), n[7]),
     ];
 
+    // asset names and references, meshes, then the tree body by body
     let assets::AssetRefs {
         geom_hfield,
         geom_mesh,
@@ -267,6 +269,7 @@ pub fn compile(mut spec: ModelSpec, h: mjModel) -> Result<Compiled, CError> {
         &meshes,
     )?;
 
+    // skins, height fields, textures and materials
     let skins = {
         let body = |n: &str| find_body(&bodies, n);
         let mats = &spec.materials;
@@ -278,6 +281,7 @@ pub fn compile(mut spec: ModelSpec, h: mjModel) -> Result<Compiled, CError> {
     let hfields = std::mem::take(&mut spec.hfields);
     let textures = textures::compile(&spec.textures)?;
     let materials = std::mem::take(&mut spec.materials);
+    // objects referring to the tree: pairs and excludes, equalities, tendons, actuators, sensors
     let (pairs, excludes) = contacts::compile(
         std::mem::take(&mut spec.pairs),
         std::mem::take(&mut spec.excludes),
@@ -316,6 +320,7 @@ pub fn compile(mut spec: ModelSpec, h: mjModel) -> Result<Compiled, CError> {
         &actuators,
     )?;
 
+    // the compiled model; then tuples, which may refer to any object
     let n = &opts.lr_numbers;
     let lropt = crate::abi::mjLROpt {
         mode: opts.lr_mode,
@@ -391,6 +396,7 @@ pub fn compile(mut spec: ModelSpec, h: mjModel) -> Result<Compiled, CError> {
             &settings,
         )?;
     }
+    // sizes, then the checks that need them
     c.count_sizes(spec.nconmax, spec.njmax, spec.nuserdata, spec.nstack)?;
     c.check_tree()?;
     c.check_keys()?;

@@ -253,7 +253,8 @@ pub(super) fn compile(
 }
 
 impl Compiled {
-    /// Rejects moving bodies need mass and inertia (or a static child that has them)
+    /// Moving bodies need mass and inertia (or a static child that has them); a free joint
+    /// stands alone in a child of the world.
     pub(super) fn check_tree(&self) -> Result<(), CError> {
         let (bodies, joints) = (&self.bodies, &self.joints);
         let heavy = |b: &FBody| b.mass >= MINVAL && b.inertia.iter().all(|&x| x >= MINVAL);
