@@ -38,139 +38,26 @@ impl Compiled {
             }
             let mut ids = Vec::new();
             for (kind, oname, _) in elems {
-                let by_name = |mut names: std::slice::Iter<'_, &str>| {
-                    names.position(|n| *n == oname.as_str())
-                };
                 let found = match kind {
                     1 | 2 => find_body(bodies, oname),
-                    3 => by_name(
-                        joints
-                            .iter()
-                            .map(|j| j.spec.name.as_str())
-                            .collect::<Vec<&str>>()
-                            .iter(),
-                    ),
-                    5 => by_name(
-                        geoms
-                            .iter()
-                            .map(|g| g.spec.name.as_str())
-                            .collect::<Vec<&str>>()
-                            .iter(),
-                    ),
-                    6 => by_name(
-                        sites
-                            .iter()
-                            .map(|s| s.spec.name.as_str())
-                            .collect::<Vec<&str>>()
-                            .iter(),
-                    ),
-                    7 => by_name(
-                        cameras
-                            .iter()
-                            .map(|c| c.0.name.as_str())
-                            .collect::<Vec<&str>>()
-                            .iter(),
-                    ),
-                    8 => by_name(
-                        lights
-                            .iter()
-                            .map(|l| l.0.name.as_str())
-                            .collect::<Vec<&str>>()
-                            .iter(),
-                    ),
-                    11 => by_name(
-                        hfields
-                            .iter()
-                            .map(|h| h.name.as_str())
-                            .collect::<Vec<&str>>()
-                            .iter(),
-                    ),
-                    12 => by_name(
-                        texture_names
-                            .iter()
-                            .map(|t| t.as_str())
-                            .collect::<Vec<&str>>()
-                            .iter(),
-                    ),
-                    13 => by_name(
-                        materials
-                            .iter()
-                            .map(|m| m.name.as_str())
-                            .collect::<Vec<&str>>()
-                            .iter(),
-                    ),
-                    14 => by_name(
-                        pairs
-                            .iter()
-                            .map(|p| p.0.name.as_str())
-                            .collect::<Vec<&str>>()
-                            .iter(),
-                    ),
-                    15 => by_name(
-                        excludes
-                            .iter()
-                            .map(|e| e.0.as_str())
-                            .collect::<Vec<&str>>()
-                            .iter(),
-                    ),
-                    16 => by_name(
-                        equalities
-                            .iter()
-                            .map(|e| e.0.name.as_str())
-                            .collect::<Vec<&str>>()
-                            .iter(),
-                    ),
-                    17 => by_name(
-                        tendons
-                            .iter()
-                            .map(|t| t.spec.name.as_str())
-                            .collect::<Vec<&str>>()
-                            .iter(),
-                    ),
-                    18 => by_name(
-                        actuators
-                            .iter()
-                            .map(|a| a.name.as_str())
-                            .collect::<Vec<&str>>()
-                            .iter(),
-                    ),
-                    19 => by_name(
-                        csensors
-                            .iter()
-                            .map(|s| s.spec.name.as_str())
-                            .collect::<Vec<&str>>()
-                            .iter(),
-                    ),
-                    20 => by_name(
-                        custom
-                            .numerics
-                            .iter()
-                            .map(|x| x.0.as_str())
-                            .collect::<Vec<&str>>()
-                            .iter(),
-                    ),
-                    21 => by_name(
-                        custom
-                            .texts
-                            .iter()
-                            .map(|x| x.0.as_str())
-                            .collect::<Vec<&str>>()
-                            .iter(),
-                    ),
-                    22 => by_name(
-                        custom
-                            .tuples
-                            .iter()
-                            .map(|x| x.0.as_str())
-                            .collect::<Vec<&str>>()
-                            .iter(),
-                    ),
-                    23 => by_name(
-                        keys.iter()
-                            .map(|k| k.name.as_str())
-                            .collect::<Vec<&str>>()
-                            .iter(),
-                    ),
+                    3 => position_of(joints.iter().map(|j| j.spec.name.as_str()), oname),
+                    5 => position_of(geoms.iter().map(|g| g.spec.name.as_str()), oname),
+                    6 => position_of(sites.iter().map(|s| s.spec.name.as_str()), oname),
+                    7 => position_of(cameras.iter().map(|c| c.0.name.as_str()), oname),
+                    8 => position_of(lights.iter().map(|l| l.0.name.as_str()), oname),
+                    11 => position_of(hfields.iter().map(|h| h.name.as_str()), oname),
+                    12 => position_of(texture_names.iter().map(|t| t.as_str()), oname),
+                    13 => position_of(materials.iter().map(|m| m.name.as_str()), oname),
+                    14 => position_of(pairs.iter().map(|p| p.0.name.as_str()), oname),
+                    15 => position_of(excludes.iter().map(|e| e.0.as_str()), oname),
+                    16 => position_of(equalities.iter().map(|e| e.0.name.as_str()), oname),
+                    17 => position_of(tendons.iter().map(|t| t.spec.name.as_str()), oname),
+                    18 => position_of(actuators.iter().map(|a| a.name.as_str()), oname),
+                    19 => position_of(csensors.iter().map(|s| s.spec.name.as_str()), oname),
+                    20 => position_of(custom.numerics.iter().map(|x| x.0.as_str()), oname),
+                    21 => position_of(custom.texts.iter().map(|x| x.0.as_str()), oname),
+                    22 => position_of(custom.tuples.iter().map(|x| x.0.as_str()), oname),
+                    23 => position_of(keys.iter().map(|k| k.name.as_str()), oname),
                     _ => None,
                 };
                 let Some(found) = found else {
@@ -217,4 +104,9 @@ impl Compiled {
             adr += x.2.len();
         }
     }
+}
+
+/// Index of the first of the names equal to the given one.
+fn position_of<'a>(mut names: impl Iterator<Item = &'a str>, name: &str) -> Option<usize> {
+    names.position(|n| n == name)
 }
