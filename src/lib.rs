@@ -4,6 +4,7 @@ pub mod abi;
 pub mod capi;
 pub mod compiler;
 pub mod engine;
+pub mod loader;
 pub mod math;
 pub mod runtime;
 pub mod xml;
