@@ -17,8 +17,8 @@ fn solve3(a: &[[f64; 3]; 3], b: &[f64; 3]) -> [f64; 3] {
     for i in 0..3 {
         for j in 0..=i {
             let mut s = a[i][j];
-            for k in 0..j {
-                s -= l[i][k] * l[j][k];
+            for (x, y) in l[i][..j].iter().zip(&l[j][..j]) {
+                s -= x * y;
             }
             l[i][j] = if i == j { s.sqrt() } else { s / l[j][j] };
         }

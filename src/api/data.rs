@@ -57,6 +57,16 @@ macro_rules! arrays {
     };
 }
 
+impl std::fmt::Debug for Data<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Data")
+            .field("time", &self.time())
+            .field("qpos", &self.qpos())
+            .field("qvel", &self.qvel())
+            .finish_non_exhaustive()
+    }
+}
+
 impl<'m> Data<'m> {
     pub(crate) fn new(model: &'m Model, raw: DataBox) -> Self {
         Data { model, raw }

@@ -69,6 +69,17 @@ pub struct Model {
     warning: Option<String>,
 }
 
+impl std::fmt::Debug for Model {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Model")
+            .field("nq", &self.nq())
+            .field("nv", &self.nv())
+            .field("nu", &self.nu())
+            .field("nbody", &self.nbody())
+            .finish_non_exhaustive()
+    }
+}
+
 impl Model {
     fn load(filename: &str, vfs: Option<&Vfs>) -> Result<Model, Error> {
         match catch("mj_loadXML", || loader::xml::load(filename, vfs)) {
