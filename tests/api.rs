@@ -191,6 +191,19 @@ fn engine_errors_come_back_as_err() {
 }
 
 #[test]
+fn raised_errors_are_captured_not_fatal() {
+    // what a user callback calling mju_error during an API call meets: the first message is
+    // kept and the process goes on
+    let ((), raised) = capture_errors(|| {
+        mujoco::runtime::error("first");
+        mujoco::runtime::error("second");
+    });
+    assert_eq!(raised.as_deref(), Some("first"));
+    let ((), none) = capture_errors(|| ());
+    assert_eq!(none, None);
+}
+
+#[test]
 fn load_errors_carry_the_c_message() {
     let bad = model("arm3.xml").replace("arm3.xml", "no-such-model.xml");
     let (c, text) = c_load(&bad);
@@ -205,6 +218,20 @@ fn load_errors_carry_the_c_message() {
     );
     assert!(Model::from_mjb(b"not an mjb").is_err());
     assert!(Model::from_xml_str("").is_err());
+}
+
+#[test]
+fn xml_text_with_in_memory_assets() {
+    let part = br#"<mujoco><worldbody><body name="b"><freejoint/>
+        <geom type="box" size=".1 .1 .1"/></body></worldbody></mujoco>"#;
+    let xml = r#"<mujoco><include file="dir/Part.xml"/></mujoco>"#;
+    let model = Model::from_xml_with_assets(xml, &[("part.XML", part)]).unwrap();
+    assert_eq!((model.nq(), model.nv(), model.nbody()), (7, 6, 2));
+    assert!(matches!(
+        Model::from_xml_with_assets(xml, &[("", part)]),
+        Err(Error::Invalid(_))
+    ));
+    assert!(matches!(Model::from_xml_str(xml), Err(Error::Load(_))));
 }
 
 #[test]
