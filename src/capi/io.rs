@@ -2,6 +2,7 @@
 
 use super::errmem::{cstr, error, free, malloc, warning};
 use super::guard;
+use crate::abi::owned::ModelBox;
 use crate::abi::view::EngineError;
 use crate::abi::*;
 use crate::engine::support;
@@ -72,12 +73,14 @@ pub unsafe extern "C" fn mj_sizeModel(m: *const mjModel) -> c_int {
 
 #[no_mangle]
 pub unsafe extern "C" fn mj_makeData(m: *const mjModel) -> *mut mjData {
-    let Some(m) = m.as_ref() else {
+    if m.is_null() {
         error("mj_makeData: NULL model");
         return std::ptr::null_mut();
-    };
-    match new_data(m) {
-        Ok(d) => d,
+    }
+    // only read: the model is the caller's, never freed here
+    let m = std::mem::ManuallyDrop::new(ModelBox::from_raw(m as *mut mjModel));
+    match loader::new_data(&m) {
+        Ok(d) => d.into_raw(),
         Err(e) if e.starts_with("Invalid") => {
             warning(&e);
             std::ptr::null_mut()
@@ -87,14 +90,6 @@ pub unsafe extern "C" fn mj_makeData(m: *const mjModel) -> *mut mjData {
             std::ptr::null_mut()
         }
     }
-}
-
-/// Allocates data for `m` and resets it.
-pub fn new_data(m: &mjModel) -> Result<*mut mjData, String> {
-    let d = alloc::alloc_data(m)?;
-    // SAFETY: d was just made for m.
-    unsafe { support::reset_data(&view::Model::new(m), &mut view::Data::new(m, &mut *d)) };
-    Ok(d)
 }
 
 #[no_mangle]
