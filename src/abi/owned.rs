@@ -1,7 +1,7 @@
 //! Owning handles of `mjModel` and `mjData`: made by the allocator, freed on drop, and the
 //! only way the core outside the C shell reaches their memory (through the safe views).
 
-use super::alloc::{alloc_data, copy_model, delete_data, delete_model, fill_buffer, make_model};
+use super::alloc::{alloc_data, copy_model, delete_data, delete_model, make_model};
 use super::view::{Data, DataRef, Model, ModelMut};
 use super::*;
 use std::ptr::NonNull;
@@ -115,17 +115,14 @@ pub struct DataBox {
 unsafe impl Send for DataBox {}
 
 impl DataBox {
-    /// Data for `m`, its buffer zeroed (mj_resetData gives the initial state).
+    /// Data for `m`, its memory zeroed by `alloc_data` (mj_resetData gives the initial state).
     pub fn new(m: &ModelBox) -> Result<Self, String> {
         let d = alloc_data(m.raw())?;
         // SAFETY: alloc_data returns a fresh, non-NULL mjData on success.
-        unsafe {
-            fill_buffer(&mut *d, 0);
-            Ok(DataBox {
-                data: NonNull::new_unchecked(d),
-                model: m.as_ptr(),
-            })
-        }
+        Ok(DataBox {
+            data: unsafe { NonNull::new_unchecked(d) },
+            model: m.as_ptr(),
+        })
     }
 
     /// Takes ownership of `d`, made for `m`.
