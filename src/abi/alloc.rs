@@ -173,9 +173,10 @@ pub fn alloc_data(m: &mjModel) -> Result<*mut mjData, String> {
         buffer_size(rows.iter().map(|r| (r.1, r.2))).ok_or("Invalid data: buffer too large")?;
     let nstack = m.nstack.max(0) as usize;
     let d = malloc(std::mem::size_of::<mjData>()) as *mut mjData;
-    let buffer = malloc(nbuffer.max(1));
-    // zeroed, so that scratch taken from it unzeroed (Arena::alloc_stale) is never uninitialized
-    // memory; calloc's pages stay untouched until the simulation reaches them
+    // both zeroed, so that no view ever reads uninitialized memory (scratch taken unzeroed by
+    // Arena::alloc_stale, arrays before mj_resetData); calloc's pages stay untouched until the
+    // simulation reaches them
+    let buffer = malloc_zeroed(nbuffer.max(1));
     let stack = malloc_zeroed((nstack * 8).max(1));
     if d.is_null() || buffer.is_null() || stack.is_null() {
         // SAFETY: each is NULL or a fresh allocation.

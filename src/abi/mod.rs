@@ -52,6 +52,7 @@ pub mod mjb;
 pub mod mjdata;
 pub mod mjmodel;
 pub mod mjtnum;
+pub mod owned;
 pub mod validate;
 pub mod view;
 

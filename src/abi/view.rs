@@ -24,6 +24,13 @@ unsafe fn array_view<'a, T>(ptr: *mut T, len: usize) -> &'a mut [T] {
     std::slice::from_raw_parts_mut(ptr, len)
 }
 
+/// Shared counterpart of `array_view`.
+#[inline(always)]
+unsafe fn array_ref<'a, T>(ptr: *const T, len: usize) -> &'a [T] {
+    debug_assert!(!ptr.is_null());
+    std::slice::from_raw_parts(ptr, len)
+}
+
 macro_rules! model_views {
     ($(($t:ident, $name:ident, $d1:ident, $($d2:tt)+)),* $(,)?) => {
         /// Read-only view of a compiled model: sizes, options and statistics through `raw`, every
@@ -90,6 +97,34 @@ macro_rules! data_views {
     };
 }
 mjdata_pointers!(data_views);
+
+macro_rules! data_ref_views {
+    ($(($t:ident, $name:ident, $d1:ident, $($d2:tt)+)),* $(,)?) => {
+        /// Read-only view of simulation data: the header and every array by its method.
+        #[derive(Clone, Copy)]
+        pub struct DataRef<'a> {
+            pub raw: &'a mjData,
+            m: &'a mjModel,
+        }
+
+        impl<'a> DataRef<'a> {
+            /// # Safety
+            /// `d` must come from `mj_makeData(m)` for this model.
+            pub unsafe fn new(m: &'a mjModel, d: &'a mjData) -> Self {
+                DataRef { raw: d, m }
+            }
+
+            $(
+                #[inline(always)]
+                pub fn $name(&self) -> &'a [elem_ty!($t)] {
+                    // SAFETY: `new`'s contract: the array has this X-macro length.
+                    unsafe { array_ref(self.raw.$name, row_len!(self.m, $d1, $($d2)+)) }
+                }
+            )*
+        }
+    };
+}
+mjdata_pointers!(data_ref_views);
 
 impl Data<'_> {
     /// Runs `f` with this data and a scratch arena scope taken from its stack; everything `f`

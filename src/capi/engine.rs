@@ -955,32 +955,10 @@ pub unsafe extern "C" fn mj_setConst(m: *mut mjModel, d: *mut mjData) {
         errmem::error("mj_setConst: NULL model or data");
         return;
     }
-    guard("mj_setConst", (), || set_const_views(&mut *m, &mut *d))
-}
-
-/// mj_setConst on views of (m, d).
-pub fn set_const_views(m: &mut mjModel, d: &mut mjData) -> Result<(), EngineError> {
-    use crate::engine::setconst::{compute, store, subtree_mass};
-    let nbody = m.nbody.max(0) as usize;
-    {
-        // SAFETY: m comes from mj_makeModel; the view lives only in this block.
-        let mut mm = unsafe { ModelMut::new(m) };
-        subtree_mass(&mut mm, nbody);
-    }
-    let consts = {
-        // SAFETY: as above; d was made for m.
-        let mv = unsafe { Model::new(&*m) };
-        let mut dv = unsafe { Data::new(&*m, d) };
-        compute(&mv, &mut dv)?
-    };
-    let mut stat = m.stat;
-    {
-        // SAFETY: as above.
-        let mut mm = unsafe { ModelMut::new(m) };
-        store(&mut mm, &mut stat, consts);
-    }
-    m.stat = stat;
-    Ok(())
+    let (mut m, mut d) = super::borrow_boxes(m, d);
+    guard("mj_setConst", (), || {
+        crate::loader::setconst::set_const(&mut m, &mut d)
+    })
 }
 
 /// Runs `f` on views of a model and data the C signature declares const (only read).

@@ -2,9 +2,11 @@
 
 use super::errmem::{cstr, error, free, malloc, warning};
 use super::guard;
+use crate::abi::owned::ModelBox;
 use crate::abi::view::EngineError;
 use crate::abi::*;
 use crate::engine::support;
+use crate::loader::{self, vfs, vfs::Vfs};
 use std::os::raw::{c_char, c_int, c_uchar, c_void};
 
 #[no_mangle]
@@ -71,12 +73,14 @@ pub unsafe extern "C" fn mj_sizeModel(m: *const mjModel) -> c_int {
 
 #[no_mangle]
 pub unsafe extern "C" fn mj_makeData(m: *const mjModel) -> *mut mjData {
-    let Some(m) = m.as_ref() else {
+    if m.is_null() {
         error("mj_makeData: NULL model");
         return std::ptr::null_mut();
-    };
-    match new_data(m) {
-        Ok(d) => d,
+    }
+    // only read: the model is the caller's, never freed here
+    let m = std::mem::ManuallyDrop::new(ModelBox::from_raw(m as *mut mjModel));
+    match loader::new_data(&m) {
+        Ok(d) => d.into_raw(),
         Err(e) if e.starts_with("Invalid") => {
             warning(&e);
             std::ptr::null_mut()
@@ -86,14 +90,6 @@ pub unsafe extern "C" fn mj_makeData(m: *const mjModel) -> *mut mjData {
             std::ptr::null_mut()
         }
     }
-}
-
-/// Allocates data for `m` and resets it.
-pub fn new_data(m: &mjModel) -> Result<*mut mjData, String> {
-    let d = alloc::alloc_data(m)?;
-    // SAFETY: d was just made for m.
-    unsafe { support::reset_data(&view::Model::new(m), &mut view::Data::new(m, &mut *d)) };
-    Ok(d)
 }
 
 #[no_mangle]
@@ -162,24 +158,20 @@ pub unsafe extern "C" fn mj_stackAlloc(d: *mut mjData, size: c_int) -> *mut mjtN
     p
 }
 
-/// A file's contents from the VFS when it holds one by that name (borrowed, `true`), else from
-/// disk.
-pub unsafe fn read_file<'a>(
-    filename: &str,
-    vfs: *const mjVFS,
-) -> Option<(std::borrow::Cow<'a, [u8]>, bool)> {
-    if let Some(vfs) = vfs.as_ref() {
-        if let Some(i) = vfs_find(vfs, filename) {
-            let n = vfs.filesize[i].max(0) as usize;
-            let p = vfs.filedata[i] as *const u8;
-            return Some(if p.is_null() {
-                (Vec::new().into(), true)
-            } else {
-                (std::slice::from_raw_parts(p, n).into(), true)
-            });
-        }
+/// The files of a C VFS, borrowed for the loader.
+///
+/// # Safety
+/// `vfs` is NULL or a valid mjVFS whose file slots hold `filesize` bytes (or NULL).
+pub unsafe fn vfs_files<'a>(vfs: *const mjVFS) -> Option<Vfs<'a>> {
+    let v = vfs.as_ref()?;
+    let mut files = Vfs::new();
+    for i in 0..v.nfile.clamp(0, mjMAXVFS as i32) as usize {
+        let p = v.filedata[i] as *const u8;
+        let data =
+            (!p.is_null()).then(|| std::slice::from_raw_parts(p, v.filesize[i].max(0) as usize));
+        files.push(vfs_name(v, i), data);
     }
-    std::fs::read(filename).ok().map(|b| (b.into(), false))
+    Some(files)
 }
 
 #[no_mangle]
@@ -221,35 +213,21 @@ pub unsafe extern "C" fn mj_saveModel(
 #[no_mangle]
 pub unsafe extern "C" fn mj_loadModel(filename: *const c_char, vfs: *const mjVFS) -> *mut mjModel {
     let name = cstr(filename);
-    let Some((bytes, buffer)) = read_file(&name, vfs) else {
-        warning(&format!("Could not open file '{name}'"));
-        return std::ptr::null_mut();
-    };
     super::guard("mj_loadModel", std::ptr::null_mut(), || {
-        Ok(match mjb::load(&bytes, buffer) {
-            Ok(m) => m,
-            Err(mjb::LoadError::Warning(e)) => {
-                warning(&e);
-                std::ptr::null_mut()
-            }
-            Err(mjb::LoadError::Error(e)) => {
-                error(&e);
-                std::ptr::null_mut()
-            }
-        })
+        Ok(
+            match loader::mjb::load_file(&name, vfs_files(vfs).as_ref()) {
+                Ok(m) => m.into_raw(),
+                Err(mjb::LoadError::Warning(e)) => {
+                    warning(&e);
+                    std::ptr::null_mut()
+                }
+                Err(mjb::LoadError::Error(e)) => {
+                    error(&e);
+                    std::ptr::null_mut()
+                }
+            },
+        )
     })
-}
-
-/// The VFS key of a file name: no directory, lower case.
-fn vfs_key(filename: &str) -> Result<String, &'static str> {
-    let base = filename.rsplit(['/', '\\']).next().unwrap_or("");
-    if base.is_empty() {
-        return Err("Empty filename in VFS");
-    }
-    if base.len() >= mjMAXVFSNAME {
-        return Err("Filename too long in VFS");
-    }
-    Ok(base.to_ascii_lowercase())
 }
 
 fn vfs_name(vfs: &mjVFS, i: usize) -> &[u8] {
@@ -260,7 +238,7 @@ fn vfs_name(vfs: &mjVFS, i: usize) -> &[u8] {
 }
 
 fn vfs_find(vfs: &mjVFS, filename: &str) -> Option<usize> {
-    let key = vfs_key(filename).ok()?;
+    let key = vfs::key(filename).ok()?;
     (0..vfs.nfile.clamp(0, mjMAXVFS as i32) as usize).find(|&i| vfs_name(vfs, i) == key.as_bytes())
 }
 
@@ -269,7 +247,7 @@ unsafe fn vfs_add(vfs: &mut mjVFS, filename: &str, data: &[u8], size: usize) -> 
     if vfs.nfile >= mjMAXVFS as i32 - 1 {
         return 1;
     }
-    let key = match vfs_key(filename) {
+    let key = match vfs::key(filename) {
         Ok(k) => k,
         Err(e) => {
             error(e);

@@ -185,3 +185,83 @@ pub fn warning(msg: &str) {
         }
     }
 }
+
+thread_local! {
+    /// Messages caught by `capture_errors` (the first) and `capture_warnings` (the last).
+    static CAUGHT_ERROR: std::cell::RefCell<Option<String>> = const { std::cell::RefCell::new(None) };
+    static CAUGHT_WARNING: std::cell::RefCell<Option<String>> = const { std::cell::RefCell::new(None) };
+}
+
+unsafe extern "C" fn catch_error(msg: *const c_char) {
+    let text = CStr::from_ptr(msg).to_string_lossy().into_owned();
+    CAUGHT_ERROR.with(|c| {
+        c.borrow_mut().get_or_insert(text);
+    });
+}
+
+unsafe extern "C" fn catch_warning(msg: *const c_char) {
+    let text = CStr::from_ptr(msg).to_string_lossy().into_owned();
+    CAUGHT_WARNING.with(|c| *c.borrow_mut() = Some(text));
+}
+
+/// Runs `f` with this thread's error hook taking the errors raised meanwhile (mju_error
+/// returns to its caller); gives the first one. The previous hook is restored.
+pub fn capture_errors<R>(f: impl FnOnce() -> R) -> (R, Option<String>) {
+    capture(
+        &CAUGHT_ERROR,
+        catch_error,
+        tls_error_handler,
+        set_tls_error_handler,
+        f,
+    )
+}
+
+/// Runs `f` with this thread's warning hook taking the warnings raised meanwhile; gives the
+/// last one. The previous hook is restored.
+pub fn capture_warnings<R>(f: impl FnOnce() -> R) -> (R, Option<String>) {
+    capture(
+        &CAUGHT_WARNING,
+        catch_warning,
+        tls_warning_handler,
+        set_tls_warning_handler,
+        f,
+    )
+}
+
+fn capture<R>(
+    slot: &'static std::thread::LocalKey<std::cell::RefCell<Option<String>>>,
+    hook: unsafe extern "C" fn(*const c_char),
+    get: fn() -> MsgHandler,
+    set: fn(MsgHandler),
+    f: impl FnOnce() -> R,
+) -> (R, Option<String>) {
+    /// Restores the previous hook, also when `f` unwinds.
+    struct Restore(fn(MsgHandler), MsgHandler);
+    impl Drop for Restore {
+        fn drop(&mut self) {
+            (self.0)(self.1)
+        }
+    }
+    let outer = slot.with(|c| c.borrow_mut().take());
+    let restore = Restore(set, get());
+    set(Some(hook));
+    let r = f();
+    drop(restore);
+    let caught = slot.with(|c| std::mem::replace(&mut *c.borrow_mut(), outer));
+    (r, caught)
+}
+
+/// A number as C's "%g" prints it (messages that quote 2.2.2's format).
+pub fn format_g(x: f64) -> String {
+    let mut buf = [0u8; 64];
+    // SAFETY: the format takes exactly one double; buf is large enough for any %g output.
+    let n = unsafe {
+        libc::snprintf(
+            buf.as_mut_ptr() as *mut libc::c_char,
+            buf.len(),
+            c"%g".as_ptr(),
+            x,
+        )
+    };
+    String::from_utf8_lossy(&buf[..(n.max(0) as usize).min(buf.len() - 1)]).into_owned()
+}

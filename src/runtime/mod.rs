@@ -4,8 +4,9 @@
 #![allow(non_upper_case_globals)]
 
 pub mod callbacks;
+pub mod guard;
 pub mod memory;
 pub mod message;
 pub mod random;
 
-pub use message::{error, warning, MsgBuf};
+pub use message::{capture_errors, capture_warnings, error, warning, MsgBuf};

@@ -1,0 +1,39 @@
+//! Panic containment for calls into the core: a panic becomes an error message, and the
+//! panic hook stays silent for panics caught here.
+
+use std::cell::Cell;
+
+thread_local! {
+    /// Depth of `catch` calls on this thread: panics inside are reported as errors.
+    static GUARDED: Cell<u32> = const { Cell::new(0) };
+}
+
+/// Runs `f`; a panic comes back as Err("`name`: internal error (why)").
+pub fn catch<R>(name: &str, f: impl FnOnce() -> R) -> Result<R, String> {
+    quiet_panics();
+    GUARDED.with(|g| g.set(g.get() + 1));
+    let result = std::panic::catch_unwind(std::panic::AssertUnwindSafe(f));
+    GUARDED.with(|g| g.set(g.get() - 1));
+    result.map_err(|p| {
+        let why = p
+            .downcast_ref::<&str>()
+            .map(|s| s.to_string())
+            .or_else(|| p.downcast_ref::<String>().cloned())
+            .unwrap_or_default();
+        format!("{name}: internal error ({why})")
+    })
+}
+
+/// Installs (once) a panic hook that stays silent for panics `catch` reports, and defers to
+/// the previous hook for any other panic.
+fn quiet_panics() {
+    static ONCE: std::sync::Once = std::sync::Once::new();
+    ONCE.call_once(|| {
+        let previous = std::panic::take_hook();
+        std::panic::set_hook(Box::new(move |info| {
+            if GUARDED.with(|g| g.get()) == 0 {
+                previous(info);
+            }
+        }));
+    });
+}
