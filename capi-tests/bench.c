@@ -1,9 +1,13 @@
-// Simulation speed, built against each library (tests/speed.rs):
-//   bench STEPS DISABLEFLAGS FILE   loads FILE, ors DISABLEFLAGS into opt.disableflags, resets
-//   (keyframe 0 if any), and times STEPS driven mj_step calls after 100 warm-up steps; prints
-//   "steps/s <rate>", or "error <message>" when the library stops with mju_error.
+// Simulation speed, built against each library (tests/speed.rs; capi-tests/bench also against
+// MuJoCo 4.0.0):
+//   bench STEPS DISABLEFLAGS FILE [stages]   loads FILE, ors DISABLEFLAGS into
+//   opt.disableflags, resets (keyframe 0 if any), and times STEPS driven mj_step calls after 100
+//   warm-up steps; prints "steps/s <rate>", or "error <message>" when the library stops with
+//   mju_error. With "stages", STEPS more steps follow with the library's stage timers on
+//   (mjcb_time): "stage <name> <microseconds per step>" for each timer.
 #include "child.h"  // first: it sets the feature macros
 #include <stdlib.h>
+#include <string.h>
 #include <time.h>
 
 static void on_error(const char* msg) {
@@ -19,9 +23,27 @@ static double now(void) {
   return t.tv_sec + 1e-9 * t.tv_nsec;
 }
 
+static mjtNum now_us(void) { return 1e6 * now(); }
+
+// STEPS more driven steps with the stage timers on; microseconds per step of each timer.
+static void stages(const mjModel* m, mjData* d, int steps) {
+  mjcb_time = now_us;
+  for (int i = 0; i < mjNTIMER; i++) {
+    d->timer[i].duration = 0;
+    d->timer[i].number = 0;
+  }
+  for (int s = 0; s < steps; s++) {
+    drive_controls(m, d, s);
+    mj_step(m, d);
+  }
+  for (int i = 0; i < mjNTIMER; i++) {
+    printf("stage %s %.3f\n", mjTIMERSTRING[i], d->timer[i].duration / steps);
+  }
+}
+
 int main(int argc, char** argv) {
-  if (argc != 4) {
-    fprintf(stderr, "usage: bench STEPS DISABLEFLAGS FILE\n");
+  if (argc != 4 && !(argc == 5 && !strcmp(argv[4], "stages"))) {
+    fprintf(stderr, "usage: bench STEPS DISABLEFLAGS FILE [stages]\n");
     return 2;
   }
   mju_user_error = on_error;
@@ -47,6 +69,7 @@ int main(int argc, char** argv) {
   }
   double dt = now() - t0;
   printf("steps/s %.1f\n", steps / dt);
+  if (argc == 5) stages(m, d, steps);
   mj_deleteData(d);
   mj_deleteModel(m);
   return 0;

@@ -168,6 +168,22 @@ pub fn compile_c_v4(srcs: &[PathBuf], name: &str) -> Option<PathBuf> {
     Some(out)
 }
 
+/// Deterministic pseudo-random numbers (splitmix64), for mutants and fuzz inputs.
+pub struct Rng(pub u64);
+
+impl Rng {
+    pub fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^ (z >> 31)
+    }
+    pub fn below(&mut self, n: usize) -> usize {
+        (self.next() % n.max(1) as u64) as usize
+    }
+}
+
 /// Runs a command with stdin closed and a time limit (coreutils `timeout`), without the
 /// LD_LIBRARY_PATH cargo sets for tests (it would point libmujoco.so.2.2.2 at ours).
 pub fn run(prog: &Path, args: &[&str], envs: &[(&str, &str)], seconds: u32) -> Output {
