@@ -24,6 +24,22 @@ const SEEDS: [&str; 8] = [
     "grid2pin.xml",
 ];
 
+/// The program built against one library, once for all tests of this file (they run in
+/// parallel: building it per test would rewrite the file while another test runs it).
+fn program(lib: Lib) -> PathBuf {
+    static OURS: std::sync::OnceLock<PathBuf> = std::sync::OnceLock::new();
+    static REF: std::sync::OnceLock<PathBuf> = std::sync::OnceLock::new();
+    let cell = if lib == Lib::Ours { &OURS } else { &REF };
+    cell.get_or_init(|| {
+        compile_c(
+            &[root().join("capi-tests/mjb_hostile.c")],
+            "mjb_hostile",
+            lib,
+        )
+    })
+    .clone()
+}
+
 fn seeds(prog: &std::path::Path) -> Vec<String> {
     let dir = work_dir("mjb_hostile");
     let mut xmls: Vec<PathBuf> = std::fs::read_dir(root().join("models"))
@@ -59,11 +75,7 @@ fn seeds(prog: &std::path::Path) -> Vec<String> {
 
 #[test]
 fn saved_models_load_back_unchanged() {
-    let prog = compile_c(
-        &[root().join("capi-tests/mjb_hostile.c")],
-        "mjb_hostile",
-        Lib::Ours,
-    );
+    let prog = program(Lib::Ours);
     let mut files = models();
     files.extend(model_list("models-extra.list"));
     files.extend(
@@ -96,9 +108,8 @@ fn saved_models_load_back_unchanged() {
 
 #[test]
 fn file_and_buffer_verdicts_match_the_reference() {
-    let src = [root().join("capi-tests/mjb_hostile.c")];
-    let ours = compile_c(&src, "mjb_hostile", Lib::Ours);
-    let reference = compile_c(&src, "mjb_hostile", Lib::Ref);
+    let ours = program(Lib::Ours);
+    let reference = program(Lib::Ref);
     let dir = work_dir("mjb_hostile_probe");
     let mut body = String::new();
     for name in ["pendulum.xml", "arm3.xml"] {
@@ -121,11 +132,7 @@ fn file_and_buffer_verdicts_match_the_reference() {
 
 #[test]
 fn hostile_mjb_files_never_crash() {
-    let prog = compile_c(
-        &[root().join("capi-tests/mjb_hostile.c")],
-        "mjb_hostile",
-        Lib::Ours,
-    );
+    let prog = program(Lib::Ours);
     let seeds = seeds(&prog);
     let total = if corpus_files().is_empty() { 300 } else { 1000 };
     let jobs = jobs().max(1);
@@ -180,11 +187,7 @@ fn hostile_mjb_files_never_crash() {
 fn activation_count_changed_is_refused_at_load() {
     // an arm26 MJB with na changed from 6 to 12 used to load and fail in mj_step with an
     // internal error; every seed with na moved by one or doubled must now be refused at load
-    let prog = compile_c(
-        &[root().join("capi-tests/mjb_hostile.c")],
-        "mjb_hostile",
-        Lib::Ours,
-    );
+    let prog = program(Lib::Ours);
     let dir = work_dir("mjb_hostile_na");
     let mut checked = 0;
     for seed in seeds(&prog) {
