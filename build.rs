@@ -84,6 +84,33 @@ fn main() {
     header(
         &root,
         &inc,
+        "mjvisualize.h",
+        &["src/abi/mjvisualize.rs"],
+        &["mujoco/mjtnum.h", "mujoco/mjmodel.h"],
+        "MUJOCO_MJVISUALIZE_H_",
+        "",
+    );
+    header(
+        &root,
+        &inc,
+        "mjrender.h",
+        &["src/abi/mjrender.rs"],
+        &["mujoco/mjmodel.h"],
+        "MUJOCO_MJRENDER_H_",
+        "",
+    );
+    header(
+        &root,
+        &inc,
+        "mjui.h",
+        &["src/abi/mjui.rs"],
+        &["mujoco/mjrender.h"],
+        "MUJOCO_MJUI_H_",
+        "",
+    );
+    header(
+        &root,
+        &inc,
         "mujoco.h",
         &[
             "src/runtime/message.rs",
@@ -96,6 +123,9 @@ fn main() {
             "mujoco/mjtnum.h",
             "mujoco/mjmodel.h",
             "mujoco/mjdata.h",
+            "mujoco/mjrender.h",
+            "mujoco/mjui.h",
+            "mujoco/mjvisualize.h",
             "stdlib.h",
             "math.h",
         ],
@@ -133,6 +163,7 @@ const INTERNAL: &[&str] = &[
     "mju_QCQP2",
     "mju_QCQP3",
     "mju_geomSemiAxes",
+    "mjv_updateActiveSkin",
 ];
 
 const MUJOCO_H_TRAILER: &str = r#"
@@ -231,6 +262,8 @@ fn header(
         "_mjPRIVATE__get_xml_precision",
         "_mjPRIVATE__set_xml_precision",
         "mj_validateReferences",
+        "mjNVISFLAG",
+        "mjNRNDFLAG",
     ]
     .iter()
     .map(|s| s.to_string())
@@ -270,7 +303,24 @@ fn header(
         .unwrap()
         .replace("#include \"mujoco/", "#include <mujoco/")
         .replace(".h\"\n", ".h>\n");
+    let text = inline_anonymous_union(&text, "mjuiItemUnion_", "u");
     write_if_changed(&inc.join(name), &text);
+}
+
+/// C's anonymous union member: the named union `tag`'s definition moves into the struct field
+/// `field` that has it as type (mjuiItem's type-specific part in mjui.h).
+fn inline_anonymous_union(text: &str, tag: &str, field: &str) -> String {
+    let open = format!("union {tag} {{\n");
+    let Some(start) = text.find(&open) else {
+        return text.to_string();
+    };
+    let end = start + text[start..].find("};\n").unwrap() + 3;
+    let body = &text[start + open.len()..end - 3];
+    let mut rest = format!("{}{}", &text[..start], &text[end..]);
+    let inner: String = body.lines().map(|l| format!("  {l}\n")).collect();
+    let member = format!("  union {tag} {field};\n");
+    rest = rest.replacen(&member, &format!("  union {{\n{inner}  }};\n"), 1);
+    rest
 }
 
 fn write_if_changed(path: &Path, text: &str) {

@@ -9,6 +9,9 @@
 #include <mujoco/mjtnum.h>
 #include <mujoco/mjmodel.h>
 #include <mujoco/mjdata.h>
+#include <mujoco/mjrender.h>
+#include <mujoco/mjui.h>
+#include <mujoco/mjvisualize.h>
 
 #ifdef __cplusplus
 extern "C" {
@@ -358,6 +361,220 @@ int mj_setLengthRange(mjModel *m,
                       const mjLROpt *opt,
                       char *error,
                       int error_sz);
+
+void mjv_defaultCamera(mjvCamera *_cam);
+
+void mjv_defaultFreeCamera(const mjModel *_m, mjvCamera *_cam);
+
+void mjv_defaultPerturb(mjvPerturb *_pert);
+
+void mjv_room2model(mjtNum *_modelpos,
+                    mjtNum *_modelquat,
+                    const mjtNum *_roompos,
+                    const mjtNum *_roomquat,
+                    const mjvScene *_scn);
+
+void mjv_model2room(mjtNum *_roompos,
+                    mjtNum *_roomquat,
+                    const mjtNum *_modelpos,
+                    const mjtNum *_modelquat,
+                    const mjvScene *_scn);
+
+void mjv_cameraInModel(mjtNum *_headpos, mjtNum *_forward, mjtNum *_up, const mjvScene *_scn);
+
+void mjv_cameraInRoom(mjtNum *_headpos, mjtNum *_forward, mjtNum *_up, const mjvScene *_scn);
+
+mjtNum mjv_frustumHeight(const mjvScene *_scn);
+
+void mjv_alignToCamera(mjtNum *_res, const mjtNum *_vec, const mjtNum *_forward);
+
+void mjv_moveCamera(const mjModel *_m,
+                    int _action,
+                    mjtNum _reldx,
+                    mjtNum _reldy,
+                    const mjvScene *_scn,
+                    mjvCamera *_cam);
+
+void mjv_movePerturb(const mjModel *_m,
+                     const mjData *_d,
+                     int _action,
+                     mjtNum _reldx,
+                     mjtNum _reldy,
+                     const mjvScene *_scn,
+                     mjvPerturb *_pert);
+
+void mjv_moveModel(const mjModel *_m,
+                   int _action,
+                   mjtNum _reldx,
+                   mjtNum _reldy,
+                   const mjtNum *_roomup,
+                   mjvScene *_scn);
+
+void mjv_initPerturb(const mjModel *_m, const mjData *_d, const mjvScene *_scn, mjvPerturb *_pert);
+
+void mjv_applyPerturbPose(const mjModel *_m, mjData *_d, const mjvPerturb *_pert, int _flg_paused);
+
+void mjv_applyPerturbForce(const mjModel *_m, mjData *_d, const mjvPerturb *_pert);
+
+mjvGLCamera mjv_averageCamera(const mjvGLCamera *_cam1, const mjvGLCamera *_cam2);
+
+int mjv_select(const mjModel *_m,
+               const mjData *_d,
+               const mjvOption *_vopt,
+               mjtNum _aspectratio,
+               mjtNum _relx,
+               mjtNum _rely,
+               const mjvScene *_scn,
+               mjtNum *_selpnt,
+               int *_geomid,
+               int *_skinid);
+
+void mjv_defaultOption(mjvOption *_opt);
+
+void mjv_defaultFigure(mjvFigure *_fig);
+
+void mjv_initGeom(mjvGeom *_geom,
+                  int _type_,
+                  const mjtNum *_size,
+                  const mjtNum *_pos,
+                  const mjtNum *_mat,
+                  const float *_rgba);
+
+void mjv_makeConnector(mjvGeom *_geom,
+                       int _type_,
+                       mjtNum _width,
+                       mjtNum _a0,
+                       mjtNum _a1,
+                       mjtNum _a2,
+                       mjtNum _b0,
+                       mjtNum _b1,
+                       mjtNum _b2);
+
+void mjv_defaultScene(mjvScene *_scn);
+
+void mjv_makeScene(const mjModel *_m, mjvScene *_scn, int _maxgeom);
+
+void mjv_freeScene(mjvScene *_scn);
+
+void mjv_updateScene(const mjModel *_m,
+                     mjData *_d,
+                     const mjvOption *_opt,
+                     const mjvPerturb *_pert,
+                     mjvCamera *_cam,
+                     int _catmask,
+                     mjvScene *_scn);
+
+void mjv_addGeoms(const mjModel *_m,
+                  mjData *_d,
+                  const mjvOption *_opt,
+                  const mjvPerturb *_pert,
+                  int _catmask,
+                  mjvScene *_scn);
+
+void mjv_makeLights(const mjModel *_m, mjData *_d, mjvScene *_scn);
+
+void mjv_updateCamera(const mjModel *_m, mjData *_d, mjvCamera *_cam, mjvScene *_scn);
+
+void mjv_updateSkin(const mjModel *_m, mjData *_d, mjvScene *_scn);
+
+void mjr_defaultContext(mjrContext *_con);
+
+void mjr_makeContext(const mjModel *_m, mjrContext *_con, int _fontscale);
+
+void mjr_changeFont(int _fontscale, mjrContext *_con);
+
+void mjr_addAux(int _index, int _width, int _height, int _samples, mjrContext *_con);
+
+void mjr_freeContext(mjrContext *_con);
+
+void mjr_uploadTexture(const mjModel *_m, const mjrContext *_con, int _texid);
+
+void mjr_uploadMesh(const mjModel *_m, const mjrContext *_con, int _meshid);
+
+void mjr_uploadHField(const mjModel *_m, const mjrContext *_con, int _hfieldid);
+
+void mjr_restoreBuffer(const mjrContext *_con);
+
+void mjr_setBuffer(int _framebuffer, mjrContext *_con);
+
+void mjr_readPixels(unsigned char *_rgb, float *_depth, mjrRect _viewport, const mjrContext *_con);
+
+void mjr_drawPixels(const unsigned char *_rgb,
+                    const float *_depth,
+                    mjrRect _viewport,
+                    const mjrContext *_con);
+
+void mjr_blitBuffer(mjrRect _src,
+                    mjrRect _dst,
+                    int _flg_color,
+                    int _flg_depth,
+                    const mjrContext *_con);
+
+void mjr_setAux(int _index, const mjrContext *_con);
+
+void mjr_blitAux(int _index, mjrRect _src, int _left, int _bottom, const mjrContext *_con);
+
+void mjr_text(int _font,
+              const char *_txt,
+              const mjrContext *_con,
+              float _x,
+              float _y,
+              float _r,
+              float _g,
+              float _b);
+
+void mjr_overlay(int _font,
+                 int _gridpos,
+                 mjrRect _viewport,
+                 const char *_overlay,
+                 const char *_overlay2,
+                 const mjrContext *_con);
+
+mjrRect mjr_maxViewport(const mjrContext *_con);
+
+void mjr_rectangle(mjrRect _viewport, float _r, float _g, float _b, float _a);
+
+void mjr_label(mjrRect _viewport,
+               int _font,
+               const char *_txt,
+               float _r,
+               float _g,
+               float _b,
+               float _a,
+               float _rt,
+               float _gt,
+               float _bt,
+               const mjrContext *_con);
+
+void mjr_figure(mjrRect _viewport, mjvFigure *_fig, const mjrContext *_con);
+
+void mjr_render(mjrRect _viewport, mjvScene *_scn, const mjrContext *_con);
+
+void mjr_finish(void);
+
+int mjr_getError(void);
+
+int mjr_findRect(int _x, int _y, int _nrect, const mjrRect *_rect);
+
+mjuiThemeSpacing mjui_themeSpacing(int _ind);
+
+mjuiThemeColor mjui_themeColor(int _ind);
+
+void mjui_add(mjUI *_ui, const mjuiDef *_def);
+
+void mjui_addToSection(mjUI *_ui, int _sect, const mjuiDef *_def);
+
+void mjui_resize(mjUI *_ui, const mjrContext *_con);
+
+void mjui_update(int _section,
+                 int _item,
+                 const mjUI *_ui,
+                 const mjuiState *_state,
+                 const mjrContext *_con);
+
+mjuiItem *mjui_event(mjUI *_ui, mjuiState *_state, const mjrContext *_con);
+
+void mjui_render(mjUI *_ui, const mjuiState *_state, const mjrContext *_con);
 
 void mj_printFormattedModel(const mjModel *m, const char *filename, const char *float_format);
 

@@ -51,11 +51,17 @@ pub mod consistency;
 pub mod mjb;
 pub mod mjdata;
 pub mod mjmodel;
+pub mod mjrender;
 pub mod mjtnum;
+pub mod mjui;
+pub mod mjvisualize;
 pub mod owned;
 pub mod validate;
 pub mod view;
 
 pub use mjdata::*;
 pub use mjmodel::*;
+pub use mjrender::*;
 pub use mjtnum::*;
+pub use mjui::*;
+pub use mjvisualize::*;

@@ -7,6 +7,7 @@ pub mod errmem;
 pub mod globals;
 pub mod io;
 pub mod lengthrange;
+pub mod pending_gl;
 pub mod print;
 pub mod util;
 pub mod xml;

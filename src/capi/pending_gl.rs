@@ -1,0 +1,549 @@
+//! Visualization (mjv_), OpenGL rendering (mjr_) and UI (mjui_) entry points not implemented yet:
+//! each reports itself through mju_error.
+
+#![allow(unused_unsafe)]
+
+use super::pending;
+use crate::abi::*;
+use std::os::raw::{c_char, c_int, c_uchar};
+
+#[no_mangle]
+pub unsafe extern "C" fn mjv_defaultCamera(_cam: *mut mjvCamera) {
+    pending("mjv_defaultCamera");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjv_defaultFreeCamera(_m: *const mjModel, _cam: *mut mjvCamera) {
+    pending("mjv_defaultFreeCamera");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjv_defaultPerturb(_pert: *mut mjvPerturb) {
+    pending("mjv_defaultPerturb");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjv_room2model(
+    _modelpos: *mut mjtNum,
+    _modelquat: *mut mjtNum,
+    _roompos: *const mjtNum,
+    _roomquat: *const mjtNum,
+    _scn: *const mjvScene,
+) {
+    pending("mjv_room2model");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjv_model2room(
+    _roompos: *mut mjtNum,
+    _roomquat: *mut mjtNum,
+    _modelpos: *const mjtNum,
+    _modelquat: *const mjtNum,
+    _scn: *const mjvScene,
+) {
+    pending("mjv_model2room");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjv_cameraInModel(
+    _headpos: *mut mjtNum,
+    _forward: *mut mjtNum,
+    _up: *mut mjtNum,
+    _scn: *const mjvScene,
+) {
+    pending("mjv_cameraInModel");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjv_cameraInRoom(
+    _headpos: *mut mjtNum,
+    _forward: *mut mjtNum,
+    _up: *mut mjtNum,
+    _scn: *const mjvScene,
+) {
+    pending("mjv_cameraInRoom");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjv_frustumHeight(_scn: *const mjvScene) -> mjtNum {
+    pending("mjv_frustumHeight");
+    0.0
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjv_alignToCamera(
+    _res: *mut mjtNum,
+    _vec: *const mjtNum,
+    _forward: *const mjtNum,
+) {
+    pending("mjv_alignToCamera");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjv_moveCamera(
+    _m: *const mjModel,
+    _action: c_int,
+    _reldx: mjtNum,
+    _reldy: mjtNum,
+    _scn: *const mjvScene,
+    _cam: *mut mjvCamera,
+) {
+    pending("mjv_moveCamera");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjv_movePerturb(
+    _m: *const mjModel,
+    _d: *const mjData,
+    _action: c_int,
+    _reldx: mjtNum,
+    _reldy: mjtNum,
+    _scn: *const mjvScene,
+    _pert: *mut mjvPerturb,
+) {
+    pending("mjv_movePerturb");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjv_moveModel(
+    _m: *const mjModel,
+    _action: c_int,
+    _reldx: mjtNum,
+    _reldy: mjtNum,
+    _roomup: *const mjtNum,
+    _scn: *mut mjvScene,
+) {
+    pending("mjv_moveModel");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjv_initPerturb(
+    _m: *const mjModel,
+    _d: *const mjData,
+    _scn: *const mjvScene,
+    _pert: *mut mjvPerturb,
+) {
+    pending("mjv_initPerturb");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjv_applyPerturbPose(
+    _m: *const mjModel,
+    _d: *mut mjData,
+    _pert: *const mjvPerturb,
+    _flg_paused: c_int,
+) {
+    pending("mjv_applyPerturbPose");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjv_applyPerturbForce(
+    _m: *const mjModel,
+    _d: *mut mjData,
+    _pert: *const mjvPerturb,
+) {
+    pending("mjv_applyPerturbForce");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjv_averageCamera(
+    _cam1: *const mjvGLCamera,
+    _cam2: *const mjvGLCamera,
+) -> mjvGLCamera {
+    pending("mjv_averageCamera");
+    unsafe { std::mem::zeroed() }
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjv_select(
+    _m: *const mjModel,
+    _d: *const mjData,
+    _vopt: *const mjvOption,
+    _aspectratio: mjtNum,
+    _relx: mjtNum,
+    _rely: mjtNum,
+    _scn: *const mjvScene,
+    _selpnt: *mut mjtNum,
+    _geomid: *mut c_int,
+    _skinid: *mut c_int,
+) -> c_int {
+    pending("mjv_select");
+    0
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjv_defaultOption(_opt: *mut mjvOption) {
+    pending("mjv_defaultOption");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjv_defaultFigure(_fig: *mut mjvFigure) {
+    pending("mjv_defaultFigure");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjv_initGeom(
+    _geom: *mut mjvGeom,
+    _type_: c_int,
+    _size: *const mjtNum,
+    _pos: *const mjtNum,
+    _mat: *const mjtNum,
+    _rgba: *const f32,
+) {
+    pending("mjv_initGeom");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjv_makeConnector(
+    _geom: *mut mjvGeom,
+    _type_: c_int,
+    _width: mjtNum,
+    _a0: mjtNum,
+    _a1: mjtNum,
+    _a2: mjtNum,
+    _b0: mjtNum,
+    _b1: mjtNum,
+    _b2: mjtNum,
+) {
+    pending("mjv_makeConnector");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjv_defaultScene(_scn: *mut mjvScene) {
+    pending("mjv_defaultScene");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjv_makeScene(_m: *const mjModel, _scn: *mut mjvScene, _maxgeom: c_int) {
+    pending("mjv_makeScene");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjv_freeScene(_scn: *mut mjvScene) {
+    pending("mjv_freeScene");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjv_updateScene(
+    _m: *const mjModel,
+    _d: *mut mjData,
+    _opt: *const mjvOption,
+    _pert: *const mjvPerturb,
+    _cam: *mut mjvCamera,
+    _catmask: c_int,
+    _scn: *mut mjvScene,
+) {
+    pending("mjv_updateScene");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjv_addGeoms(
+    _m: *const mjModel,
+    _d: *mut mjData,
+    _opt: *const mjvOption,
+    _pert: *const mjvPerturb,
+    _catmask: c_int,
+    _scn: *mut mjvScene,
+) {
+    pending("mjv_addGeoms");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjv_makeLights(_m: *const mjModel, _d: *mut mjData, _scn: *mut mjvScene) {
+    pending("mjv_makeLights");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjv_updateCamera(
+    _m: *const mjModel,
+    _d: *mut mjData,
+    _cam: *mut mjvCamera,
+    _scn: *mut mjvScene,
+) {
+    pending("mjv_updateCamera");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjv_updateSkin(_m: *const mjModel, _d: *mut mjData, _scn: *mut mjvScene) {
+    pending("mjv_updateSkin");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjr_defaultContext(_con: *mut mjrContext) {
+    pending("mjr_defaultContext");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjr_makeContext(
+    _m: *const mjModel,
+    _con: *mut mjrContext,
+    _fontscale: c_int,
+) {
+    pending("mjr_makeContext");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjr_changeFont(_fontscale: c_int, _con: *mut mjrContext) {
+    pending("mjr_changeFont");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjr_addAux(
+    _index: c_int,
+    _width: c_int,
+    _height: c_int,
+    _samples: c_int,
+    _con: *mut mjrContext,
+) {
+    pending("mjr_addAux");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjr_freeContext(_con: *mut mjrContext) {
+    pending("mjr_freeContext");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjr_uploadTexture(
+    _m: *const mjModel,
+    _con: *const mjrContext,
+    _texid: c_int,
+) {
+    pending("mjr_uploadTexture");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjr_uploadMesh(
+    _m: *const mjModel,
+    _con: *const mjrContext,
+    _meshid: c_int,
+) {
+    pending("mjr_uploadMesh");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjr_uploadHField(
+    _m: *const mjModel,
+    _con: *const mjrContext,
+    _hfieldid: c_int,
+) {
+    pending("mjr_uploadHField");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjr_restoreBuffer(_con: *const mjrContext) {
+    pending("mjr_restoreBuffer");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjr_setBuffer(_framebuffer: c_int, _con: *mut mjrContext) {
+    pending("mjr_setBuffer");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjr_readPixels(
+    _rgb: *mut c_uchar,
+    _depth: *mut f32,
+    _viewport: mjrRect,
+    _con: *const mjrContext,
+) {
+    pending("mjr_readPixels");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjr_drawPixels(
+    _rgb: *const c_uchar,
+    _depth: *const f32,
+    _viewport: mjrRect,
+    _con: *const mjrContext,
+) {
+    pending("mjr_drawPixels");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjr_blitBuffer(
+    _src: mjrRect,
+    _dst: mjrRect,
+    _flg_color: c_int,
+    _flg_depth: c_int,
+    _con: *const mjrContext,
+) {
+    pending("mjr_blitBuffer");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjr_setAux(_index: c_int, _con: *const mjrContext) {
+    pending("mjr_setAux");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjr_blitAux(
+    _index: c_int,
+    _src: mjrRect,
+    _left: c_int,
+    _bottom: c_int,
+    _con: *const mjrContext,
+) {
+    pending("mjr_blitAux");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjr_text(
+    _font: c_int,
+    _txt: *const c_char,
+    _con: *const mjrContext,
+    _x: f32,
+    _y: f32,
+    _r: f32,
+    _g: f32,
+    _b: f32,
+) {
+    pending("mjr_text");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjr_overlay(
+    _font: c_int,
+    _gridpos: c_int,
+    _viewport: mjrRect,
+    _overlay: *const c_char,
+    _overlay2: *const c_char,
+    _con: *const mjrContext,
+) {
+    pending("mjr_overlay");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjr_maxViewport(_con: *const mjrContext) -> mjrRect {
+    pending("mjr_maxViewport");
+    unsafe { std::mem::zeroed() }
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjr_rectangle(_viewport: mjrRect, _r: f32, _g: f32, _b: f32, _a: f32) {
+    pending("mjr_rectangle");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjr_label(
+    _viewport: mjrRect,
+    _font: c_int,
+    _txt: *const c_char,
+    _r: f32,
+    _g: f32,
+    _b: f32,
+    _a: f32,
+    _rt: f32,
+    _gt: f32,
+    _bt: f32,
+    _con: *const mjrContext,
+) {
+    pending("mjr_label");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjr_figure(
+    _viewport: mjrRect,
+    _fig: *mut mjvFigure,
+    _con: *const mjrContext,
+) {
+    pending("mjr_figure");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjr_render(
+    _viewport: mjrRect,
+    _scn: *mut mjvScene,
+    _con: *const mjrContext,
+) {
+    pending("mjr_render");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjr_finish() {
+    pending("mjr_finish");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjr_getError() -> c_int {
+    pending("mjr_getError");
+    0
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjr_findRect(
+    _x: c_int,
+    _y: c_int,
+    _nrect: c_int,
+    _rect: *const mjrRect,
+) -> c_int {
+    pending("mjr_findRect");
+    0
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjui_themeSpacing(_ind: c_int) -> mjuiThemeSpacing {
+    pending("mjui_themeSpacing");
+    unsafe { std::mem::zeroed() }
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjui_themeColor(_ind: c_int) -> mjuiThemeColor {
+    pending("mjui_themeColor");
+    unsafe { std::mem::zeroed() }
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjui_add(_ui: *mut mjUI, _def: *const mjuiDef) {
+    pending("mjui_add");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjui_addToSection(_ui: *mut mjUI, _sect: c_int, _def: *const mjuiDef) {
+    pending("mjui_addToSection");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjui_resize(_ui: *mut mjUI, _con: *const mjrContext) {
+    pending("mjui_resize");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjui_update(
+    _section: c_int,
+    _item: c_int,
+    _ui: *const mjUI,
+    _state: *const mjuiState,
+    _con: *const mjrContext,
+) {
+    pending("mjui_update");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjui_event(
+    _ui: *mut mjUI,
+    _state: *mut mjuiState,
+    _con: *const mjrContext,
+) -> *mut mjuiItem {
+    pending("mjui_event");
+    std::ptr::null_mut()
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjui_render(
+    _ui: *mut mjUI,
+    _state: *const mjuiState,
+    _con: *const mjrContext,
+) {
+    pending("mjui_render");
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjv_updateActiveSkin(
+    _m: *const mjModel,
+    _d: *mut mjData,
+    _scn: *mut mjvScene,
+    _opt: *const mjvOption,
+) {
+    pending("mjv_updateActiveSkin");
+}
