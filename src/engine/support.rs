@@ -175,7 +175,17 @@ pub fn reset_state(m: &Model, d: &mut Data) {
     }
     d.mocap_pos.fill(0.0);
     d.mocap_quat.fill(0.0);
-    d.qpos.copy_from_slice(m.qpos0());
+    // a model of sizes only (as the Python bindings' unpickling makes) has no qpos0 and no
+    // mocap bodies: qpos stays zero, mocap quaternions are the identity
+    if !m.raw.qpos0.is_null() {
+        d.qpos.copy_from_slice(m.qpos0());
+    }
+    if m.raw.body_mocapid.is_null() {
+        for q in d.mocap_quat.chunks_exact_mut(4) {
+            q[0] = 1.0;
+        }
+        return;
+    }
     for (i, &id) in m.body_mocapid().iter().enumerate() {
         if id >= 0 {
             put(d.mocap_pos, id as usize, &row::<3>(m.body_pos(), i));
