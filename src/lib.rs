@@ -30,6 +30,7 @@ pub mod engine;
 pub mod loader;
 pub mod math;
 pub mod runtime;
+pub mod ui;
 pub mod xml;
 
 pub use api::{Data, Error, Model, ObjKind};

@@ -556,16 +556,6 @@ int mjr_getError(void);
 
 int mjr_findRect(int _x, int _y, int _nrect, const mjrRect *_rect);
 
-mjuiThemeSpacing mjui_themeSpacing(int _ind);
-
-mjuiThemeColor mjui_themeColor(int _ind);
-
-void mjui_add(mjUI *_ui, const mjuiDef *_def);
-
-void mjui_addToSection(mjUI *_ui, int _sect, const mjuiDef *_def);
-
-void mjui_resize(mjUI *_ui, const mjrContext *_con);
-
 void mjui_update(int _section,
                  int _item,
                  const mjUI *_ui,
@@ -586,6 +576,16 @@ void mj_printFormattedData(const mjModel *m,
                            const char *float_format);
 
 void mj_printData(const mjModel *m, mjData *d, const char *filename);
+
+mjuiThemeSpacing mjui_themeSpacing(int ind);
+
+mjuiThemeColor mjui_themeColor(int ind);
+
+void mjui_add(mjUI *ui, const mjuiDef *def);
+
+void mjui_addToSection(mjUI *ui, int sect, const mjuiDef *def);
+
+void mjui_resize(mjUI *ui, const mjrContext *con);
 
 void mju_zero3(mjtNum *res);
 

@@ -266,3 +266,42 @@ pub struct mjuiDef_ {
     pub other: [c_char; mjMAXUITEXT],
 }
 pub type mjuiDef = mjuiDef_;
+
+impl mjuiItem_ {
+    /// The check and button part (every variant is plain data: any bits are a valid value).
+    pub fn single(&self) -> &mjuiItemSingle_ {
+        // SAFETY: all union variants are integers, doubles and chars, valid for any bits.
+        unsafe { &self.u.single }
+    }
+    pub fn single_mut(&mut self) -> &mut mjuiItemSingle_ {
+        // SAFETY: as in `single`.
+        unsafe { &mut self.u.single }
+    }
+    /// The static, radio and select part.
+    pub fn multi(&self) -> &mjuiItemMulti_ {
+        // SAFETY: as in `single`.
+        unsafe { &self.u.multi }
+    }
+    pub fn multi_mut(&mut self) -> &mut mjuiItemMulti_ {
+        // SAFETY: as in `single`.
+        unsafe { &mut self.u.multi }
+    }
+    /// The slider part.
+    pub fn slider(&self) -> &mjuiItemSlider_ {
+        // SAFETY: as in `single`.
+        unsafe { &self.u.slider }
+    }
+    pub fn slider_mut(&mut self) -> &mut mjuiItemSlider_ {
+        // SAFETY: as in `single`.
+        unsafe { &mut self.u.slider }
+    }
+    /// The edit part.
+    pub fn edit(&self) -> &mjuiItemEdit_ {
+        // SAFETY: as in `single`.
+        unsafe { &self.u.edit }
+    }
+    pub fn edit_mut(&mut self) -> &mut mjuiItemEdit_ {
+        // SAFETY: as in `single`.
+        unsafe { &mut self.u.edit }
+    }
+}

@@ -482,33 +482,6 @@ pub unsafe extern "C" fn mjr_findRect(
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mjui_themeSpacing(_ind: c_int) -> mjuiThemeSpacing {
-    pending("mjui_themeSpacing");
-    unsafe { std::mem::zeroed() }
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mjui_themeColor(_ind: c_int) -> mjuiThemeColor {
-    pending("mjui_themeColor");
-    unsafe { std::mem::zeroed() }
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mjui_add(_ui: *mut mjUI, _def: *const mjuiDef) {
-    pending("mjui_add");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mjui_addToSection(_ui: *mut mjUI, _sect: c_int, _def: *const mjuiDef) {
-    pending("mjui_addToSection");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mjui_resize(_ui: *mut mjUI, _con: *const mjrContext) {
-    pending("mjui_resize");
-}
-
-#[no_mangle]
 pub unsafe extern "C" fn mjui_update(
     _section: c_int,
     _item: c_int,

@@ -1,0 +1,6 @@
+//! The UI framework (mjui_): themes, building from definition tables, layout, events and
+//! drawing. Beside the engine, never inside it; drawing goes through the OpenGL layer.
+
+pub mod build;
+pub mod layout;
+pub mod theme;
