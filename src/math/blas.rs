@@ -174,6 +174,46 @@ pub fn mul_mat_mat(res: &mut [f64], mat1: &[f64], mat2: &[f64], r1: usize, c1: u
     }
 }
 
+/// `mul_mat_mat` on fixed sizes (same operations in the same order, unrolled by the compiler).
+#[inline(always)]
+pub fn mul_mat_mat_fixed<const R1: usize, const C1: usize, const C2: usize>(
+    mat1: &[f64],
+    mat2: &[f64],
+) -> [[f64; C2]; R1] {
+    let mut res = [[0.0; C2]; R1];
+    for (i, row) in res.iter_mut().enumerate() {
+        for k in 0..C1 {
+            let s = mat1[i * C1 + k];
+            if s != 0.0 {
+                for (j, r) in row.iter_mut().enumerate() {
+                    *r += mat2[k * C2 + j] * s;
+                }
+            }
+        }
+    }
+    res
+}
+
+/// `mul_mat_t_mat` on fixed sizes (same operations in the same order).
+#[inline(always)]
+pub fn mul_mat_t_mat_fixed<const R1: usize, const C1: usize, const C2: usize>(
+    mat1: &[f64],
+    mat2: &[f64],
+) -> [[f64; C2]; C1] {
+    let mut res = [[0.0; C2]; C1];
+    for i in 0..R1 {
+        for (j, row) in res.iter_mut().enumerate() {
+            let s = mat1[i * C1 + j];
+            if s != 0.0 {
+                for (k, r) in row.iter_mut().enumerate() {
+                    *r += mat2[i * C2 + k] * s;
+                }
+            }
+        }
+    }
+    res
+}
+
 /// res (r1 x r2) = mat1 (r1 x c1) * mat2^T (mat2 is r2 x c1).
 pub fn mul_mat_mat_t(res: &mut [f64], mat1: &[f64], mat2: &[f64], r1: usize, c1: usize, r2: usize) {
     for i in 0..r1 {

@@ -1,6 +1,6 @@
 //! Eigen-decomposition of symmetric 3x3 matrices by quaternion Jacobi rotations.
 
-use super::blas::{mul_mat_mat, mul_mat_t_mat};
+use super::blas::{mul_mat_mat_fixed, mul_mat_t_mat_fixed};
 use super::quat::{mul_quat, normalize4, quat2mat, unit_quat};
 use super::{Mat3, Quat, Vec3};
 
@@ -30,10 +30,9 @@ pub fn eig3(mat: &Mat3) -> Eig3 {
     let mut iter = 0;
     while iter < 500 {
         let v = quat2mat(&q);
-        let mut t = [0.0; 9];
-        let mut d = [0.0; 9];
-        mul_mat_t_mat(&mut t, &v, mat, 3, 3, 3);
-        mul_mat_mat(&mut d, &t, &v, 3, 3, 3);
+        let t = mul_mat_t_mat_fixed::<3, 3, 3>(&v, mat);
+        let d = mul_mat_mat_fixed::<3, 3, 3>(t.as_flattened(), &v);
+        let d = d.as_flattened();
         eigval = [d[0], d[4], d[8]];
 
         let (rk, ck, rotk) = if d[1].abs() > d[2].abs() && d[1].abs() > d[5].abs() {
