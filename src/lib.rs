@@ -31,6 +31,7 @@ pub mod loader;
 pub mod math;
 pub mod runtime;
 pub mod ui;
+pub mod visualize;
 pub mod xml;
 
 pub use api::{Data, Error, Model, ObjKind};

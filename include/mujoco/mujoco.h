@@ -362,12 +362,6 @@ int mj_setLengthRange(mjModel *m,
                       char *error,
                       int error_sz);
 
-void mjv_defaultCamera(mjvCamera *_cam);
-
-void mjv_defaultFreeCamera(const mjModel *_m, mjvCamera *_cam);
-
-void mjv_defaultPerturb(mjvPerturb *_pert);
-
 void mjv_room2model(mjtNum *_modelpos,
                     mjtNum *_modelquat,
                     const mjtNum *_roompos,
@@ -429,10 +423,6 @@ int mjv_select(const mjModel *_m,
                int *_geomid,
                int *_skinid);
 
-void mjv_defaultOption(mjvOption *_opt);
-
-void mjv_defaultFigure(mjvFigure *_fig);
-
 void mjv_initGeom(mjvGeom *_geom,
                   int _type_,
                   const mjtNum *_size,
@@ -449,12 +439,6 @@ void mjv_makeConnector(mjvGeom *_geom,
                        mjtNum _b0,
                        mjtNum _b1,
                        mjtNum _b2);
-
-void mjv_defaultScene(mjvScene *_scn);
-
-void mjv_makeScene(const mjModel *_m, mjvScene *_scn, int _maxgeom);
-
-void mjv_freeScene(mjvScene *_scn);
 
 void mjv_updateScene(const mjModel *_m,
                      mjData *_d,
@@ -782,6 +766,22 @@ void mju_printMatSparse(const mjtNum *mat,
                         const int *rownnz,
                         const int *rowadr,
                         const int *colind);
+
+void mjv_defaultCamera(mjvCamera *cam);
+
+void mjv_defaultFreeCamera(const mjModel *m, mjvCamera *cam);
+
+void mjv_defaultPerturb(mjvPerturb *pert);
+
+void mjv_defaultOption(mjvOption *opt);
+
+void mjv_defaultFigure(mjvFigure *fig);
+
+void mjv_defaultScene(mjvScene *scn);
+
+void mjv_makeScene(const mjModel *m, mjvScene *scn, int maxgeom);
+
+void mjv_freeScene(mjvScene *scn);
 
 mjModel *mj_loadXML(const char *filename, const mjVFS *vfs, char *error, int error_sz);
 

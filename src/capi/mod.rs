@@ -11,6 +11,7 @@ pub mod pending_gl;
 pub mod print;
 pub mod ui;
 pub mod util;
+pub mod visualize;
 pub mod xml;
 
 use crate::abi::owned::{DataBox, ModelBox};

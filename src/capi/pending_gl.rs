@@ -8,21 +8,6 @@ use crate::abi::*;
 use std::os::raw::{c_char, c_int, c_uchar};
 
 #[no_mangle]
-pub unsafe extern "C" fn mjv_defaultCamera(_cam: *mut mjvCamera) {
-    pending("mjv_defaultCamera");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mjv_defaultFreeCamera(_m: *const mjModel, _cam: *mut mjvCamera) {
-    pending("mjv_defaultFreeCamera");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mjv_defaultPerturb(_pert: *mut mjvPerturb) {
-    pending("mjv_defaultPerturb");
-}
-
-#[no_mangle]
 pub unsafe extern "C" fn mjv_room2model(
     _modelpos: *mut mjtNum,
     _modelquat: *mut mjtNum,
@@ -172,16 +157,6 @@ pub unsafe extern "C" fn mjv_select(
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mjv_defaultOption(_opt: *mut mjvOption) {
-    pending("mjv_defaultOption");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mjv_defaultFigure(_fig: *mut mjvFigure) {
-    pending("mjv_defaultFigure");
-}
-
-#[no_mangle]
 pub unsafe extern "C" fn mjv_initGeom(
     _geom: *mut mjvGeom,
     _type_: c_int,
@@ -206,21 +181,6 @@ pub unsafe extern "C" fn mjv_makeConnector(
     _b2: mjtNum,
 ) {
     pending("mjv_makeConnector");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mjv_defaultScene(_scn: *mut mjvScene) {
-    pending("mjv_defaultScene");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mjv_makeScene(_m: *const mjModel, _scn: *mut mjvScene, _maxgeom: c_int) {
-    pending("mjv_makeScene");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mjv_freeScene(_scn: *mut mjvScene) {
-    pending("mjv_freeScene");
 }
 
 #[no_mangle]
