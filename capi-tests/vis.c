@@ -2,7 +2,13 @@
 // against 2.2.2.
 //   vis defaults            default structs, the free camera and scene buffers of no model
 //   vis scene MODEL...      per model: the scene buffers after mjv_makeScene
+//   vis update MODEL...     per model, at a state after 40 steps: mjv_updateScene under every
+//                           option, label and frame mode, category, perturbation and camera
+//                           (a hash of the whole scene; update-verbose prints it)
+#define _GNU_SOURCE
+#include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <mujoco/mujoco.h>
 
@@ -145,9 +151,206 @@ static int scene(int argc, char** argv) {
   return 0;
 }
 
+// ---------------------------------------------------------------- mjv_updateScene
+
+static void fpf(FILE* f, const char* name, const float* v, int n) {
+  fprintf(f, "%s", name);
+  for (int i = 0; i < n; i++) fprintf(f, " %a", (double)v[i]);
+  fprintf(f, "\n");
+}
+
+static void fbits(FILE* f, const char* name, const float* v, int n) {
+  fprintf(f, "%s", name);
+  for (int i = 0; i < n; i++) {
+    unsigned u;
+    memcpy(&u, v + i, 4);
+    fprintf(f, "%s%08x", i % 12 ? " " : "\n ", u);
+  }
+  fprintf(f, "\n");
+}
+
+// the scene as text: geoms (not camdist and transparent, which the renderer sets), lights,
+// GL cameras, skins
+static void dump_scene(FILE* f, const mjvScene* s) {
+  fprintf(f, "ngeom %d nlight %d enabletransform %d\n", s->ngeom, s->nlight,
+          s->enabletransform);
+  for (int i = 0; i < s->ngeom; i++) {
+    const mjvGeom* g = s->geoms + i;
+    fprintf(f, "geom %d type %d dataid %d obj %d %d category %d tex %d %d %d segid %d\n", i,
+            g->type, g->dataid, g->objtype, g->objid, g->category, g->texid, g->texuniform,
+            g->texcoord, g->segid);
+    fpf(f, " texrepeat", g->texrepeat, 2);
+    fpf(f, " size", g->size, 3);
+    fpf(f, " pos", g->pos, 3);
+    fpf(f, " mat", g->mat, 9);
+    fpf(f, " rgba", g->rgba, 4);
+    fpf(f, " material", &g->emission, 4);
+    fpf(f, " modelrbound", &g->modelrbound, 1);
+    fprintf(f, " label '%.99s'\n", g->label);
+  }
+  for (int i = 0; i < s->nlight; i++) {
+    const mjvLight* l = s->lights + i;
+    fprintf(f, "light %d headlight %d directional %d castshadow %d\n", i, l->headlight,
+            l->directional, l->castshadow);
+    fpf(f, " pos dir attenuation cutoff exponent", l->pos, 11);
+    fpf(f, " ambient diffuse specular", l->ambient, 9);
+  }
+  for (int i = 0; i < 2; i++) {
+    fprintf(f, "glcamera %d\n", i);
+    fpf(f, " pos forward up", s->camera[i].pos, 9);
+    fpf(f, " frustum", &s->camera[i].frustum_center, 5);
+  }
+  int totvert = 0;
+  for (int i = 0; i < s->nskin; i++) totvert += s->skinvertnum[i];
+  if (totvert) {
+    fbits(f, "skinvert", s->skinvert, 3 * totvert);
+    fbits(f, "skinnormal", s->skinnormal, 3 * totvert);
+  }
+}
+
+static unsigned long long fnv(const char* p, size_t n) {
+  unsigned long long h = 1469598103934665603ULL;
+  for (size_t i = 0; i < n; i++) h = (h ^ (unsigned char)p[i]) * 1099511628211ULL;
+  return h;
+}
+
+// options of configuration k (false when k is past the last)
+static int configure(const mjModel* m, const mjData* d, int k, mjvOption* opt,
+                     mjvPerturb* pert, mjvCamera* cam, int* catmask, int* maxgeom) {
+  mjv_defaultOption(opt);
+  mjv_defaultPerturb(pert);
+  mjv_defaultFreeCamera(m, cam);
+  *catmask = mjCAT_ALL;
+  *maxgeom = 5000;
+  if (k == 0) return 1;
+  if (k <= mjNVISFLAG) {  // each flag flipped
+    opt->flags[k - 1] = !opt->flags[k - 1];
+    return 1;
+  }
+  k -= mjNVISFLAG + 1;
+  // the rest: every flag and group on
+  for (int i = 0; i < mjNVISFLAG; i++) opt->flags[i] = 1;
+  for (int i = 0; i < mjNGROUP; i++) {
+    opt->geomgroup[i] = opt->sitegroup[i] = opt->jointgroup[i] = 1;
+    opt->tendongroup[i] = opt->actuatorgroup[i] = opt->skingroup[i] = 1;
+  }
+  if (k == 0) return 1;
+  if (k <= 13) {
+    opt->label = k;
+    return 1;
+  }
+  k -= 14;
+  if (k < 7) {
+    opt->frame = k + 1;
+    opt->label = mjLABEL_CONTACTFORCE;
+    return 1;
+  }
+  k -= 7;
+  if (k < 3) {
+    *catmask = 1 << k;
+    return 1;
+  }
+  k -= 3;
+  if (k < 4) {  // perturbations of the last body
+    int b = m->nbody - 1;
+    pert->select = b;
+    pert->skinselect = m->nskin ? 0 : -1;
+    pert->active = k & 1 ? mjPERT_TRANSLATE : mjPERT_ROTATE;
+    pert->active2 = k & 2 ? mjPERT_ROTATE : mjPERT_TRANSLATE;
+    for (int i = 0; i < 3; i++) {
+      pert->refpos[i] = d->xipos[3 * b + i] + 0.1 * (i + 1);
+      pert->localpos[i] = 0.01 * (i + 1);
+    }
+    double q[4] = {0.9, 0.1, 0.2, 0.3};
+    mju_normalize4(q);
+    mju_copy4(pert->refquat, q);
+    opt->label = k < 2 ? mjLABEL_SELECTION : mjLABEL_SELPNT;
+    return 1;
+  }
+  k -= 4;
+  if (k == 0) {  // tracking the last body
+    cam->type = mjCAMERA_TRACKING;
+    cam->trackbodyid = m->nbody - 1;
+    return 1;
+  }
+  k -= 1;
+  if (k < 3 && k < m->ncam) {
+    cam->type = mjCAMERA_FIXED;
+    cam->fixedcamid = k;
+    return 1;
+  }
+  k -= 3;
+  if (k < 2) {  // full geom buffers
+    *maxgeom = k ? 1 : 10;
+    return 1;
+  }
+  return 0;
+}
+
+// a state with motion, contacts, controls and an applied force
+static void state(const mjModel* m, mjData* d) {
+  mj_resetData(m, d);
+  if (m->nkey) mj_resetDataKeyframe(m, d, 0);
+  for (int t = 0; t < 40; t++) {
+    for (int i = 0; i < m->nu; i++) d->ctrl[i] = sin(0.1 * t + i);
+    mj_step(m, d);
+  }
+  if (m->nbody > 1) {
+    double frc[6] = {1, 2, 3, 0.1, 0, 0};
+    mju_copy(d->xfrc_applied + 6 * (m->nbody - 1), frc, 6);
+  }
+  mj_forward(m, d);
+}
+
+static int update(int argc, char** argv) {
+  int verbose = !strcmp(argv[1], "update-verbose");
+  for (int a = 2; a < argc; a++) {
+    char err[1000] = "";
+    mjModel* m = mj_loadXML(argv[a], NULL, err, sizeof err);
+    printf("model %s\n", argv[a]);
+    if (!m) {
+      printf(" load error: %s\n", err);
+      continue;
+    }
+    mjData* d = mj_makeData(m);
+    state(m, d);
+    mjvScene scn;
+    mjv_defaultScene(&scn);
+    int made = -1;
+    mjvOption opt;
+    mjvPerturb pert;
+    mjvCamera cam;
+    int catmask, maxgeom;
+    for (int k = 0; configure(m, d, k, &opt, &pert, &cam, &catmask, &maxgeom); k++) {
+      if (maxgeom != made) {
+        mjv_makeScene(m, &scn, maxgeom);
+        made = maxgeom;
+      }
+      char* buf = NULL;
+      size_t len = 0;
+      FILE* f = open_memstream(&buf, &len);
+      mjv_updateScene(m, d, &opt, &pert, &cam, catmask, &scn);
+      dump_scene(f, &scn);
+      fprintf(f, "camera %d lookat %a %a %a\n", cam.type, cam.lookat[0], cam.lookat[1],
+              cam.lookat[2]);
+      fprintf(f, "warning vgeomfull %d %d\n", d->warning[mjWARN_VGEOMFULL].number,
+              d->warning[mjWARN_VGEOMFULL].lastinfo);
+      fclose(f);
+      printf(" config %d ngeom %d hash %016llx\n", k, scn.ngeom, fnv(buf, len));
+      if (verbose) fputs(buf, stdout);
+      free(buf);
+    }
+    mjv_freeScene(&scn);
+    mj_deleteData(d);
+    mj_deleteModel(m);
+  }
+  return 0;
+}
+
 int main(int argc, char** argv) {
   if (argc >= 2 && !strcmp(argv[1], "defaults")) return defaults();
   if (argc >= 2 && !strcmp(argv[1], "scene")) return scene(argc, argv);
-  fprintf(stderr, "usage: vis defaults | vis scene MODEL...\n");
+  if (argc >= 2 && !strncmp(argv[1], "update", 6)) return update(argc, argv);
+  fprintf(stderr, "usage: vis defaults | vis scene|update|update-verbose MODEL...\n");
   return 2;
 }

@@ -93,3 +93,48 @@ fn scene_buffers_match_reference() {
     assert!(lines > 10 * files.len(), "vis scene printed {lines} lines");
     assert!(differ.is_none(), "{}", differ.unwrap());
 }
+
+/// The first line where `update-verbose` output on `model` differs between the libraries.
+fn first_difference(model: &str) -> String {
+    let (r, o) = programs();
+    let args = ["update-verbose", model];
+    let reference = text(&run(r, &args, &[], 600).stdout);
+    let ours = run(o, &args, &[], 600);
+    let ours_text = text(&ours.stdout);
+    let mut last_config = "";
+    for (a, b) in reference.lines().zip(ours_text.lines()) {
+        if a.starts_with(" config") {
+            last_config = a;
+            continue;
+        }
+        if a != b {
+            return format!("{model}\n after {last_config}\n reference: {a}\n ours:      {b}");
+        }
+    }
+    format!("{model}: outputs differ in length\n{}", text(&ours.stderr))
+}
+
+#[test]
+fn scenes_match_reference() {
+    let files = all_models();
+    let (differ, lines) = compare("update", &files);
+    let configs = lines.saturating_sub(files.len());
+    report(
+        "vis-update",
+        &format!(
+            "mjv_updateScene: {} models, {configs} scenes (options, labels, frames, categories, \
+             perturbations, cameras, full buffers): {}\n",
+            files.len(),
+            if differ.is_none() {
+                "all identical"
+            } else {
+                "DIFFER"
+            }
+        ),
+    );
+    if let Some(d) = differ {
+        let model = d.lines().next().unwrap_or("").trim_start_matches("model ");
+        panic!("{d}\n{}", first_difference(model));
+    }
+    assert!(configs > 40 * files.len(), "only {configs} scenes compared");
+}

@@ -423,44 +423,6 @@ int mjv_select(const mjModel *_m,
                int *_geomid,
                int *_skinid);
 
-void mjv_initGeom(mjvGeom *_geom,
-                  int _type_,
-                  const mjtNum *_size,
-                  const mjtNum *_pos,
-                  const mjtNum *_mat,
-                  const float *_rgba);
-
-void mjv_makeConnector(mjvGeom *_geom,
-                       int _type_,
-                       mjtNum _width,
-                       mjtNum _a0,
-                       mjtNum _a1,
-                       mjtNum _a2,
-                       mjtNum _b0,
-                       mjtNum _b1,
-                       mjtNum _b2);
-
-void mjv_updateScene(const mjModel *_m,
-                     mjData *_d,
-                     const mjvOption *_opt,
-                     const mjvPerturb *_pert,
-                     mjvCamera *_cam,
-                     int _catmask,
-                     mjvScene *_scn);
-
-void mjv_addGeoms(const mjModel *_m,
-                  mjData *_d,
-                  const mjvOption *_opt,
-                  const mjvPerturb *_pert,
-                  int _catmask,
-                  mjvScene *_scn);
-
-void mjv_makeLights(const mjModel *_m, mjData *_d, mjvScene *_scn);
-
-void mjv_updateCamera(const mjModel *_m, mjData *_d, mjvCamera *_cam, mjvScene *_scn);
-
-void mjv_updateSkin(const mjModel *_m, mjData *_d, mjvScene *_scn);
-
 void mjr_defaultContext(mjrContext *_con);
 
 void mjr_makeContext(const mjModel *_m, mjrContext *_con, int _fontscale);
@@ -782,6 +744,44 @@ void mjv_defaultScene(mjvScene *scn);
 void mjv_makeScene(const mjModel *m, mjvScene *scn, int maxgeom);
 
 void mjv_freeScene(mjvScene *scn);
+
+void mjv_initGeom(mjvGeom *geom,
+                  int type,
+                  const mjtNum *size,
+                  const mjtNum *pos,
+                  const mjtNum *mat,
+                  const float *rgba);
+
+void mjv_makeConnector(mjvGeom *geom,
+                       int type,
+                       mjtNum width,
+                       mjtNum a0,
+                       mjtNum a1,
+                       mjtNum a2,
+                       mjtNum b0,
+                       mjtNum b1,
+                       mjtNum b2);
+
+void mjv_addGeoms(const mjModel *m,
+                  mjData *d,
+                  const mjvOption *opt,
+                  const mjvPerturb *pert,
+                  int catmask,
+                  mjvScene *scn);
+
+void mjv_makeLights(const mjModel *m, mjData *d, mjvScene *scn);
+
+void mjv_updateCamera(const mjModel *m, mjData *d, mjvCamera *cam, mjvScene *scn);
+
+void mjv_updateScene(const mjModel *m,
+                     mjData *d,
+                     const mjvOption *opt,
+                     const mjvPerturb *pert,
+                     mjvCamera *cam,
+                     int catmask,
+                     mjvScene *scn);
+
+void mjv_updateSkin(const mjModel *m, mjData *d, mjvScene *scn);
 
 mjModel *mj_loadXML(const char *filename, const mjVFS *vfs, char *error, int error_sz);
 

@@ -48,6 +48,7 @@ macro_rules! row_len {
 
 pub mod alloc;
 pub mod consistency;
+pub mod cstr;
 pub mod mjb;
 pub mod mjdata;
 pub mod mjmodel;

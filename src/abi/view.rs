@@ -233,3 +233,37 @@ impl<'a> Arena<'a> {
         self.used
     }
 }
+
+/// Writable view of an abstract scene (mjvScene): its header, and its geom and skin vertex
+/// buffers as slices.
+pub struct Scene<'a> {
+    /// Header: counts, lights, GL cameras, flags (its pointers must not be changed).
+    pub raw: &'a mut mjvScene,
+    pub geoms: &'a mut [mjvGeom],
+    pub skinvert: &'a mut [f32],
+    pub skinnormal: &'a mut [f32],
+}
+
+impl<'a> Scene<'a> {
+    /// # Safety
+    /// `scn` comes from mjv_makeScene (or is cleared): `geoms` holds `maxgeom` geoms, the skin
+    /// buffers 3 floats for each vertex its `skinvertnum` counts.
+    pub unsafe fn new(scn: &'a mut mjvScene) -> Self {
+        let nskin = if scn.skinvertnum.is_null() {
+            0
+        } else {
+            scn.nskin.max(0) as usize
+        };
+        let vertnum = std::slice::from_raw_parts(scn.skinvertnum, nskin);
+        let totvert: usize = vertnum.iter().map(|&n| n.max(0) as usize).sum();
+        let geoms = view_mut(scn.geoms, scn.maxgeom.max(0) as usize);
+        let skinvert = view_mut(scn.skinvert, 3 * totvert);
+        let skinnormal = view_mut(scn.skinnormal, 3 * totvert);
+        Scene {
+            raw: scn,
+            geoms,
+            skinvert,
+            skinnormal,
+        }
+    }
+}

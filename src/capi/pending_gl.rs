@@ -157,78 +157,6 @@ pub unsafe extern "C" fn mjv_select(
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn mjv_initGeom(
-    _geom: *mut mjvGeom,
-    _type_: c_int,
-    _size: *const mjtNum,
-    _pos: *const mjtNum,
-    _mat: *const mjtNum,
-    _rgba: *const f32,
-) {
-    pending("mjv_initGeom");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mjv_makeConnector(
-    _geom: *mut mjvGeom,
-    _type_: c_int,
-    _width: mjtNum,
-    _a0: mjtNum,
-    _a1: mjtNum,
-    _a2: mjtNum,
-    _b0: mjtNum,
-    _b1: mjtNum,
-    _b2: mjtNum,
-) {
-    pending("mjv_makeConnector");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mjv_updateScene(
-    _m: *const mjModel,
-    _d: *mut mjData,
-    _opt: *const mjvOption,
-    _pert: *const mjvPerturb,
-    _cam: *mut mjvCamera,
-    _catmask: c_int,
-    _scn: *mut mjvScene,
-) {
-    pending("mjv_updateScene");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mjv_addGeoms(
-    _m: *const mjModel,
-    _d: *mut mjData,
-    _opt: *const mjvOption,
-    _pert: *const mjvPerturb,
-    _catmask: c_int,
-    _scn: *mut mjvScene,
-) {
-    pending("mjv_addGeoms");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mjv_makeLights(_m: *const mjModel, _d: *mut mjData, _scn: *mut mjvScene) {
-    pending("mjv_makeLights");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mjv_updateCamera(
-    _m: *const mjModel,
-    _d: *mut mjData,
-    _cam: *mut mjvCamera,
-    _scn: *mut mjvScene,
-) {
-    pending("mjv_updateCamera");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mjv_updateSkin(_m: *const mjModel, _d: *mut mjData, _scn: *mut mjvScene) {
-    pending("mjv_updateSkin");
-}
-
-#[no_mangle]
 pub unsafe extern "C" fn mjr_defaultContext(_con: *mut mjrContext) {
     pending("mjr_defaultContext");
 }
@@ -469,14 +397,4 @@ pub unsafe extern "C" fn mjui_render(
     _con: *const mjrContext,
 ) {
     pending("mjui_render");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mjv_updateActiveSkin(
-    _m: *const mjModel,
-    _d: *mut mjData,
-    _scn: *mut mjvScene,
-    _opt: *const mjvOption,
-) {
-    pending("mjv_updateActiveSkin");
 }

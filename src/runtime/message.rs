@@ -253,15 +253,27 @@ fn capture<R>(
 
 /// A number as C's "%g" prints it (messages that quote 2.2.2's format).
 pub fn format_g(x: f64) -> String {
-    let mut buf = [0u8; 64];
-    // SAFETY: the format takes exactly one double; buf is large enough for any %g output.
-    let n = unsafe {
-        libc::snprintf(
-            buf.as_mut_ptr() as *mut libc::c_char,
-            buf.len(),
-            c"%g".as_ptr(),
-            x,
-        )
+    format_c(c"%g", &[x])
+}
+
+/// Doubles formatted by C's snprintf with `fmt` (labels that quote 2.2.2's formats); `fmt`
+/// takes exactly `args.len()` doubles, at most six.
+pub fn format_c(fmt: &std::ffi::CStr, args: &[f64]) -> String {
+    let mut buf = [0u8; 256];
+    let (p, n, f) = (
+        buf.as_mut_ptr() as *mut libc::c_char,
+        buf.len(),
+        fmt.as_ptr(),
+    );
+    let a = |i: usize| args.get(i).copied().unwrap_or(0.0);
+    // SAFETY: the caller's format takes the doubles passed; buf bounds the output.
+    let len = unsafe {
+        match args.len() {
+            1 => libc::snprintf(p, n, f, a(0)),
+            3 => libc::snprintf(p, n, f, a(0), a(1), a(2)),
+            6 => libc::snprintf(p, n, f, a(0), a(1), a(2), a(3), a(4), a(5)),
+            _ => panic!("format_c takes 1, 3 or 6 numbers"),
+        }
     };
-    String::from_utf8_lossy(&buf[..(n.max(0) as usize).min(buf.len() - 1)]).into_owned()
+    String::from_utf8_lossy(&buf[..(len.max(0) as usize).min(buf.len() - 1)]).into_owned()
 }
