@@ -5,6 +5,8 @@
 //   vis update MODEL...     per model, at a state after 40 steps: mjv_updateScene under every
 //                           option, label and frame mode, category, perturbation and camera
 //                           (a hash of the whole scene; update-verbose prints it)
+//   vis interact MODEL...   per model: camera queries, mouse motion of camera, model and
+//                           perturbation, perturbation forces and poses, selection on a grid
 #define _GNU_SOURCE
 #include <math.h>
 #include <stdio.h>
@@ -347,10 +349,164 @@ static int update(int argc, char** argv) {
   return 0;
 }
 
+// ---------------------------------------------------------------- interaction
+
+static void pglcam(const char* name, const mjvGLCamera* c) {
+  printf("%s", name);
+  fpf(stdout, " pos forward up", c->pos, 9);
+  fpf(stdout, " frustum", &c->frustum_center, 5);
+}
+
+static void pscn_transform(const mjvScene* s) {
+  pf(" translate", s->translate, 3);
+  pf(" rotate", s->rotate, 4);
+  pf(" scale", &s->scale, 1);
+}
+
+static void camera_info(const mjvScene* scn) {
+  mjtNum head[3], fwd[3], up[3];
+  mjv_cameraInModel(head, fwd, up, scn);
+  pd(" inmodel head", head, 3);
+  pd(" inmodel forward", fwd, 3);
+  pd(" inmodel up", up, 3);
+  mjv_cameraInRoom(head, fwd, up, scn);
+  pd(" inroom head", head, 3);
+  pd(" inroom forward", fwd, 3);
+  pd(" inroom up", up, 3);
+  mjtNum h = mjv_frustumHeight(scn);
+  pd(" frustumheight", &h, 1);
+  mjtNum v[3] = {1, 2, 3}, res[3];
+  mjv_alignToCamera(res, v, fwd);
+  pd(" aligned", res, 3);
+}
+
+static int interact(int argc, char** argv) {
+  for (int a = 2; a < argc; a++) {
+    char err[1000] = "";
+    mjModel* m = mj_loadXML(argv[a], NULL, err, sizeof err);
+    printf("model %s\n", argv[a]);
+    if (!m) {
+      printf(" load error: %s\n", err);
+      continue;
+    }
+    mjData* d = mj_makeData(m);
+    state(m, d);
+    mjvScene scn;
+    mjv_defaultScene(&scn);
+    mjv_makeScene(m, &scn, 5000);
+    mjvOption opt;
+    mjv_defaultOption(&opt);
+    opt.flags[mjVIS_SKIN] = 1;
+    mjvPerturb pert;
+    mjv_defaultPerturb(&pert);
+    mjvCamera cam;
+    mjv_defaultFreeCamera(m, &cam);
+    mjv_updateScene(m, d, &opt, &pert, &cam, mjCAT_ALL, &scn);
+    camera_info(&scn);
+    mjvGLCamera avg = mjv_averageCamera(scn.camera, scn.camera + 1);
+    pglcam("average", &avg);
+
+    // the camera moved by the mouse: free, then tracking
+    for (int type = 0; type < 2; type++) {
+      mjv_defaultFreeCamera(m, &cam);
+      if (type) {
+        cam.type = mjCAMERA_TRACKING;
+        cam.trackbodyid = m->nbody - 1;
+      }
+      for (int action = mjMOUSE_ROTATE_V; action <= mjMOUSE_ZOOM; action++) {
+        for (int rep = 0; rep < 3; rep++) {
+          mjv_moveCamera(m, action, 0.1 * (rep + 1), -0.05 * (rep + 2), &scn, &cam);
+          mjv_updateCamera(m, d, &cam, &scn);
+        }
+        printf(" movecamera type %d action %d\n", type, action);
+        camera(" camera", &cam);
+      }
+    }
+
+    // the model moved in the room
+    scn.enabletransform = 1;
+    float tr[3] = {0.1f, 0.2f, 0.3f}, rot[4] = {0.9f, 0.1f, -0.2f, 0.3f};
+    memcpy(scn.translate, tr, sizeof tr);
+    mjtNum q[4];
+    for (int i = 0; i < 4; i++) q[i] = rot[i];
+    mju_normalize4(q);
+    for (int i = 0; i < 4; i++) scn.rotate[i] = (float)q[i];
+    scn.scale = 1.5f;
+    mjtNum pos[3] = {0.3, -0.2, 0.5}, quat[4] = {0.5, 0.5, -0.5, 0.5}, p2[3], q2[4];
+    mjv_room2model(p2, q2, pos, quat, &scn);
+    pd(" room2model pos", p2, 3);
+    pd(" room2model quat", q2, 4);
+    mjv_model2room(p2, q2, pos, quat, &scn);
+    pd(" model2room pos", p2, 3);
+    pd(" model2room quat", q2, 4);
+    camera_info(&scn);
+    mjtNum roomup[3] = {0, 0, 1};
+    for (int action = mjMOUSE_ROTATE_V; action <= mjMOUSE_ZOOM; action++) {
+      mjv_moveModel(m, action, 0.05, -0.03, roomup, &scn);
+      printf(" movemodel action %d\n", action);
+      pscn_transform(&scn);
+    }
+    scn.enabletransform = 0;
+
+    // perturbations of the last body and of the first child of a root
+    for (int which = 0; which < 2 && m->nbody > 1; which++) {
+      int sel = m->nbody - 1;
+      if (which) {
+        sel = -1;
+        for (int b = 1; b < m->nbody && sel < 0; b++) {
+          if (m->body_rootid[b] != b) sel = b;
+        }
+        if (sel < 0) break;
+      }
+      mjv_defaultPerturb(&pert);
+      pert.select = sel;
+      mjv_initPerturb(m, d, &scn, &pert);
+      printf(" initperturb body %d\n", sel);
+      perturb(&pert);
+      for (int action = mjMOUSE_ROTATE_V; action <= mjMOUSE_ZOOM; action++) {
+        for (int rep = 0; rep < 12; rep++) {
+          mjv_movePerturb(m, d, action, 0.02 * (rep + 1), 0.03, &scn, &pert);
+        }
+        printf(" moveperturb action %d\n", action);
+        perturb(&pert);
+      }
+      for (int active = 1; active <= 3; active++) {
+        pert.active = active & 1;
+        pert.active2 = active & 2;
+        mjv_applyPerturbForce(m, d, &pert);
+        pd(" xfrc_applied", d->xfrc_applied + 6 * sel, 6);
+        for (int paused = 0; paused < 2; paused++) {
+          mjv_applyPerturbPose(m, d, &pert, paused);
+          pd(" qpos", d->qpos, m->nq < 14 ? m->nq : 14);
+          if (m->nmocap) pd(" mocap", d->mocap_pos, 3);
+        }
+      }
+      mj_forward(m, d);
+    }
+
+    // selection over the image
+    mjv_updateScene(m, d, &opt, NULL, &cam, mjCAT_ALL, &scn);
+    for (int iy = 0; iy <= 8; iy++) {
+      for (int ix = 0; ix <= 8; ix++) {
+        mjtNum selpnt[3] = {0, 0, 0};
+        int geom = -7, skin = -7;
+        int body = mjv_select(m, d, &opt, 1.5, ix / 8.0, iy / 8.0, &scn, selpnt, &geom, &skin);
+        printf(" select %d %d body %d geom %d skin %d", ix, iy, body, geom, skin);
+        pd("", selpnt, 3);
+      }
+    }
+    mjv_freeScene(&scn);
+    mj_deleteData(d);
+    mj_deleteModel(m);
+  }
+  return 0;
+}
+
 int main(int argc, char** argv) {
   if (argc >= 2 && !strcmp(argv[1], "defaults")) return defaults();
   if (argc >= 2 && !strcmp(argv[1], "scene")) return scene(argc, argv);
   if (argc >= 2 && !strncmp(argv[1], "update", 6)) return update(argc, argv);
+  if (argc >= 2 && !strcmp(argv[1], "interact")) return interact(argc, argv);
   fprintf(stderr, "usage: vis defaults | vis scene|update|update-verbose MODEL...\n");
   return 2;
 }

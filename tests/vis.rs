@@ -138,3 +138,24 @@ fn scenes_match_reference() {
     }
     assert!(configs > 40 * files.len(), "only {configs} scenes compared");
 }
+
+#[test]
+fn interaction_matches_reference() {
+    let files = all_models();
+    let (differ, lines) = compare("interact", &files);
+    report(
+        "vis-interact",
+        &format!(
+            "mjv_ interaction (camera queries, moveCamera/Model/Perturb, initPerturb, \
+             applyPerturbForce/Pose, select on a 9x9 grid): {} models, {lines} lines: {}\n",
+            files.len(),
+            if differ.is_none() {
+                "all identical"
+            } else {
+                "DIFFER"
+            }
+        ),
+    );
+    assert!(differ.is_none(), "{}", differ.unwrap());
+    assert!(lines > 150 * files.len(), "only {lines} lines compared");
+}

@@ -362,67 +362,6 @@ int mj_setLengthRange(mjModel *m,
                       char *error,
                       int error_sz);
 
-void mjv_room2model(mjtNum *_modelpos,
-                    mjtNum *_modelquat,
-                    const mjtNum *_roompos,
-                    const mjtNum *_roomquat,
-                    const mjvScene *_scn);
-
-void mjv_model2room(mjtNum *_roompos,
-                    mjtNum *_roomquat,
-                    const mjtNum *_modelpos,
-                    const mjtNum *_modelquat,
-                    const mjvScene *_scn);
-
-void mjv_cameraInModel(mjtNum *_headpos, mjtNum *_forward, mjtNum *_up, const mjvScene *_scn);
-
-void mjv_cameraInRoom(mjtNum *_headpos, mjtNum *_forward, mjtNum *_up, const mjvScene *_scn);
-
-mjtNum mjv_frustumHeight(const mjvScene *_scn);
-
-void mjv_alignToCamera(mjtNum *_res, const mjtNum *_vec, const mjtNum *_forward);
-
-void mjv_moveCamera(const mjModel *_m,
-                    int _action,
-                    mjtNum _reldx,
-                    mjtNum _reldy,
-                    const mjvScene *_scn,
-                    mjvCamera *_cam);
-
-void mjv_movePerturb(const mjModel *_m,
-                     const mjData *_d,
-                     int _action,
-                     mjtNum _reldx,
-                     mjtNum _reldy,
-                     const mjvScene *_scn,
-                     mjvPerturb *_pert);
-
-void mjv_moveModel(const mjModel *_m,
-                   int _action,
-                   mjtNum _reldx,
-                   mjtNum _reldy,
-                   const mjtNum *_roomup,
-                   mjvScene *_scn);
-
-void mjv_initPerturb(const mjModel *_m, const mjData *_d, const mjvScene *_scn, mjvPerturb *_pert);
-
-void mjv_applyPerturbPose(const mjModel *_m, mjData *_d, const mjvPerturb *_pert, int _flg_paused);
-
-void mjv_applyPerturbForce(const mjModel *_m, mjData *_d, const mjvPerturb *_pert);
-
-mjvGLCamera mjv_averageCamera(const mjvGLCamera *_cam1, const mjvGLCamera *_cam2);
-
-int mjv_select(const mjModel *_m,
-               const mjData *_d,
-               const mjvOption *_vopt,
-               mjtNum _aspectratio,
-               mjtNum _relx,
-               mjtNum _rely,
-               const mjvScene *_scn,
-               mjtNum *_selpnt,
-               int *_geomid,
-               int *_skinid);
-
 void mjr_defaultContext(mjrContext *_con);
 
 void mjr_makeContext(const mjModel *_m, mjrContext *_con, int _fontscale);
@@ -782,6 +721,67 @@ void mjv_updateScene(const mjModel *m,
                      mjvScene *scn);
 
 void mjv_updateSkin(const mjModel *m, mjData *d, mjvScene *scn);
+
+void mjv_room2model(mjtNum *modelpos,
+                    mjtNum *modelquat,
+                    const mjtNum *roompos,
+                    const mjtNum *roomquat,
+                    const mjvScene *scn);
+
+void mjv_model2room(mjtNum *roompos,
+                    mjtNum *roomquat,
+                    const mjtNum *modelpos,
+                    const mjtNum *modelquat,
+                    const mjvScene *scn);
+
+void mjv_cameraInModel(mjtNum *headpos, mjtNum *forward, mjtNum *up, const mjvScene *scn);
+
+void mjv_cameraInRoom(mjtNum *headpos, mjtNum *forward, mjtNum *up, const mjvScene *scn);
+
+mjtNum mjv_frustumHeight(const mjvScene *scn);
+
+void mjv_alignToCamera(mjtNum *res, const mjtNum *vec, const mjtNum *forward);
+
+void mjv_moveCamera(const mjModel *m,
+                    int action,
+                    mjtNum reldx,
+                    mjtNum reldy,
+                    const mjvScene *scn,
+                    mjvCamera *cam);
+
+void mjv_movePerturb(const mjModel *m,
+                     const mjData *d,
+                     int action,
+                     mjtNum reldx,
+                     mjtNum reldy,
+                     const mjvScene *scn,
+                     mjvPerturb *pert);
+
+void mjv_moveModel(const mjModel *m,
+                   int action,
+                   mjtNum reldx,
+                   mjtNum reldy,
+                   const mjtNum *roomup,
+                   mjvScene *scn);
+
+void mjv_initPerturb(const mjModel *m, const mjData *d, const mjvScene *scn, mjvPerturb *pert);
+
+void mjv_applyPerturbPose(const mjModel *m, mjData *d, const mjvPerturb *pert, int flg_paused);
+
+void mjv_applyPerturbForce(const mjModel *m, mjData *d, const mjvPerturb *pert);
+
+mjvGLCamera mjv_averageCamera(const mjvGLCamera *cam1, const mjvGLCamera *cam2);
+
+int mjv_select(const mjModel *m,
+               const mjData *d,
+               const mjvOption *vopt,
+               mjtNum aspectratio,
+               mjtNum relx,
+               mjtNum rely,
+               const mjvScene *scn,
+               mjtNum *selpnt,
+               int *geomid,
+               int *skinid);
 
 mjModel *mj_loadXML(const char *filename, const mjVFS *vfs, char *error, int error_sz);
 

@@ -244,18 +244,37 @@ pub struct Scene<'a> {
     pub skinnormal: &'a mut [f32],
 }
 
+/// Number of skin vertices the scene's buffers hold.
+///
+/// # Safety
+/// `skinvertnum` is NULL or holds `nskin` counts.
+unsafe fn scene_skin_vertices(scn: &mjvScene) -> usize {
+    if scn.skinvertnum.is_null() {
+        return 0;
+    }
+    let vertnum = std::slice::from_raw_parts(scn.skinvertnum, scn.nskin.max(0) as usize);
+    vertnum.iter().map(|&n| n.max(0) as usize).sum()
+}
+
+/// The scene's skin vertices, read only.
+///
+/// # Safety
+/// As for `Scene::new`.
+pub unsafe fn scene_skinvert(scn: &mjvScene) -> &[f32] {
+    let n = 3 * scene_skin_vertices(scn);
+    if scn.skinvert.is_null() {
+        &[]
+    } else {
+        std::slice::from_raw_parts(scn.skinvert, n)
+    }
+}
+
 impl<'a> Scene<'a> {
     /// # Safety
     /// `scn` comes from mjv_makeScene (or is cleared): `geoms` holds `maxgeom` geoms, the skin
     /// buffers 3 floats for each vertex its `skinvertnum` counts.
     pub unsafe fn new(scn: &'a mut mjvScene) -> Self {
-        let nskin = if scn.skinvertnum.is_null() {
-            0
-        } else {
-            scn.nskin.max(0) as usize
-        };
-        let vertnum = std::slice::from_raw_parts(scn.skinvertnum, nskin);
-        let totvert: usize = vertnum.iter().map(|&n| n.max(0) as usize).sum();
+        let totvert = scene_skin_vertices(scn);
         let geoms = view_mut(scn.geoms, scn.maxgeom.max(0) as usize);
         let skinvert = view_mut(scn.skinvert, 3 * totvert);
         let skinnormal = view_mut(scn.skinnormal, 3 * totvert);

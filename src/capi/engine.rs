@@ -36,7 +36,7 @@ unsafe fn arr3(p: *const f64) -> [f64; 3] {
 }
 
 /// Runs a pipeline function on views of (m, d) under `guard`.
-unsafe fn run<R>(
+pub(super) unsafe fn run<R>(
     name: &str,
     fallback: R,
     m: *const mjModel,
@@ -962,7 +962,7 @@ pub unsafe extern "C" fn mj_setConst(m: *mut mjModel, d: *mut mjData) {
 }
 
 /// Runs `f` on views of a model and data the C signature declares const (only read).
-unsafe fn run_const<R>(
+pub(super) unsafe fn run_const<R>(
     name: &str,
     fallback: R,
     m: *const mjModel,

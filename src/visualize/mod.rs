@@ -9,6 +9,7 @@ mod catenary;
 mod decor;
 pub mod defaults;
 pub mod geom;
+pub mod interact;
 pub mod lights;
 mod objects;
 pub mod scene;
