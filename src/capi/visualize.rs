@@ -222,6 +222,8 @@ unsafe fn write(p: *mut mjtNum, v: &[mjtNum]) {
     }
 }
 
+type PoseMap = fn(&[f64; 3], &[f64; 4], &mjvScene) -> Result<([f64; 3], [f64; 4]), EngineError>;
+
 /// A pose transform of the scene (room2model, model2room) on C arrays.
 unsafe fn transform_pose(
     name: &str,
@@ -230,7 +232,7 @@ unsafe fn transform_pose(
     frompos: *const mjtNum,
     fromquat: *const mjtNum,
     scn: *const mjvScene,
-    f: fn(&[f64; 3], &[f64; 4], &mjvScene) -> Result<([f64; 3], [f64; 4]), EngineError>,
+    f: PoseMap,
 ) {
     let (Some(p), Some(q), Some(scn)) = (read::<3>(frompos), read::<4>(fromquat), scn.as_ref())
     else {

@@ -214,7 +214,7 @@ pub fn move_perturb(
             let body = xiquat(m, d, sel as usize);
             let rel = mul_quat(&neg_quat(&body), &pert.refquat);
             let (axis, angle) = normalize3(&quat2vel(&rel, 1.0));
-            if angle < -PI * 0.5 || angle > PI * 0.5 {
+            if !(-PI * 0.5..=PI * 0.5).contains(&angle) {
                 let angle = c_max(-PI * 0.5, if PI * 0.5 < angle { PI * 0.5 } else { angle });
                 pert.refquat = mul_quat(&body, &axis_angle2quat(&axis, angle));
             }
