@@ -214,7 +214,10 @@ pub fn move_perturb(
             let body = xiquat(m, d, sel as usize);
             let rel = mul_quat(&neg_quat(&body), &pert.refquat);
             let (axis, angle) = normalize3(&quat2vel(&rel, 1.0));
-            if !(-PI * 0.5..=PI * 0.5).contains(&angle) {
+            // not a range test: a NaN angle is left alone, as in 2.2.2
+            #[allow(clippy::manual_range_contains)]
+            let outside = angle < -PI * 0.5 || angle > PI * 0.5;
+            if outside {
                 let angle = c_max(-PI * 0.5, if PI * 0.5 < angle { PI * 0.5 } else { angle });
                 pert.refquat = mul_quat(&body, &axis_angle2quat(&axis, angle));
             }
