@@ -246,16 +246,14 @@ fn common_errors_same_messages() {
 }
 
 /// MuJoCo's own Python tests (bindings_test, rollout_test) pass on ours; the tests that use
-/// mjv_/mjr_ wait for the visualization and OpenGL layers.
+/// mjr_ wait for the OpenGL layer.
 #[test]
 fn upstream_python_tests_pass() {
     let args = [
         "mujoco.bindings_test",
         "mujoco.rollout_test",
         "--without",
-        "Mjv",
         "Mjr",
-        "mjv_",
         "mjr_",
     ];
     let (Some(ours), Some(reference)) = (
