@@ -29,6 +29,7 @@ pub mod compiler;
 pub mod engine;
 pub mod loader;
 pub mod math;
+pub mod render;
 pub mod runtime;
 pub mod ui;
 pub mod visualize;

@@ -362,43 +362,6 @@ int mj_setLengthRange(mjModel *m,
                       char *error,
                       int error_sz);
 
-void mjr_defaultContext(mjrContext *_con);
-
-void mjr_makeContext(const mjModel *_m, mjrContext *_con, int _fontscale);
-
-void mjr_changeFont(int _fontscale, mjrContext *_con);
-
-void mjr_addAux(int _index, int _width, int _height, int _samples, mjrContext *_con);
-
-void mjr_freeContext(mjrContext *_con);
-
-void mjr_uploadTexture(const mjModel *_m, const mjrContext *_con, int _texid);
-
-void mjr_uploadMesh(const mjModel *_m, const mjrContext *_con, int _meshid);
-
-void mjr_uploadHField(const mjModel *_m, const mjrContext *_con, int _hfieldid);
-
-void mjr_restoreBuffer(const mjrContext *_con);
-
-void mjr_setBuffer(int _framebuffer, mjrContext *_con);
-
-void mjr_readPixels(unsigned char *_rgb, float *_depth, mjrRect _viewport, const mjrContext *_con);
-
-void mjr_drawPixels(const unsigned char *_rgb,
-                    const float *_depth,
-                    mjrRect _viewport,
-                    const mjrContext *_con);
-
-void mjr_blitBuffer(mjrRect _src,
-                    mjrRect _dst,
-                    int _flg_color,
-                    int _flg_depth,
-                    const mjrContext *_con);
-
-void mjr_setAux(int _index, const mjrContext *_con);
-
-void mjr_blitAux(int _index, mjrRect _src, int _left, int _bottom, const mjrContext *_con);
-
 void mjr_text(int _font,
               const char *_txt,
               const mjrContext *_con,
@@ -414,8 +377,6 @@ void mjr_overlay(int _font,
                  const char *_overlay,
                  const char *_overlay2,
                  const mjrContext *_con);
-
-mjrRect mjr_maxViewport(const mjrContext *_con);
 
 void mjr_rectangle(mjrRect _viewport, float _r, float _g, float _b, float _a);
 
@@ -434,12 +395,6 @@ void mjr_label(mjrRect _viewport,
 void mjr_figure(mjrRect _viewport, mjvFigure *_fig, const mjrContext *_con);
 
 void mjr_render(mjrRect _viewport, mjvScene *_scn, const mjrContext *_con);
-
-void mjr_finish(void);
-
-int mjr_getError(void);
-
-int mjr_findRect(int _x, int _y, int _nrect, const mjrRect *_rect);
 
 void mjui_update(int _section,
                  int _item,
@@ -461,6 +416,47 @@ void mj_printFormattedData(const mjModel *m,
                            const char *float_format);
 
 void mj_printData(const mjModel *m, mjData *d, const char *filename);
+
+void mjr_defaultContext(mjrContext *con);
+
+void mjr_makeContext(const mjModel *m, mjrContext *con, int fontscale);
+
+void mjr_freeContext(mjrContext *con);
+
+void mjr_changeFont(int fontscale, mjrContext *con);
+
+void mjr_addAux(int index, int width, int height, int samples, mjrContext *con);
+
+void mjr_uploadTexture(const mjModel *m, const mjrContext *con, int texid);
+
+void mjr_uploadMesh(const mjModel *m, const mjrContext *con, int meshid);
+
+void mjr_uploadHField(const mjModel *m, const mjrContext *con, int hfieldid);
+
+void mjr_setBuffer(int framebuffer, mjrContext *con);
+
+void mjr_restoreBuffer(const mjrContext *con);
+
+void mjr_readPixels(unsigned char *rgb, float *depth, mjrRect viewport, const mjrContext *con);
+
+void mjr_drawPixels(const unsigned char *rgb,
+                    const float *depth,
+                    mjrRect viewport,
+                    const mjrContext *_con);
+
+void mjr_blitBuffer(mjrRect src, mjrRect dst, int flg_color, int flg_depth, const mjrContext *con);
+
+void mjr_setAux(int index, const mjrContext *con);
+
+void mjr_blitAux(int index, mjrRect src, int left, int bottom, const mjrContext *con);
+
+mjrRect mjr_maxViewport(const mjrContext *con);
+
+void mjr_finish(void);
+
+int mjr_getError(void);
+
+int mjr_findRect(int x, int y, int nrect, const mjrRect *rect);
 
 mjuiThemeSpacing mjui_themeSpacing(int ind);
 

@@ -9,6 +9,7 @@ pub mod io;
 pub mod lengthrange;
 pub mod pending_gl;
 pub mod print;
+pub mod render;
 pub mod ui;
 pub mod util;
 pub mod visualize;

@@ -5,126 +5,7 @@
 
 use super::pending;
 use crate::abi::*;
-use std::os::raw::{c_char, c_int, c_uchar};
-
-#[no_mangle]
-pub unsafe extern "C" fn mjr_defaultContext(_con: *mut mjrContext) {
-    pending("mjr_defaultContext");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mjr_makeContext(
-    _m: *const mjModel,
-    _con: *mut mjrContext,
-    _fontscale: c_int,
-) {
-    pending("mjr_makeContext");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mjr_changeFont(_fontscale: c_int, _con: *mut mjrContext) {
-    pending("mjr_changeFont");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mjr_addAux(
-    _index: c_int,
-    _width: c_int,
-    _height: c_int,
-    _samples: c_int,
-    _con: *mut mjrContext,
-) {
-    pending("mjr_addAux");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mjr_freeContext(_con: *mut mjrContext) {
-    pending("mjr_freeContext");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mjr_uploadTexture(
-    _m: *const mjModel,
-    _con: *const mjrContext,
-    _texid: c_int,
-) {
-    pending("mjr_uploadTexture");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mjr_uploadMesh(
-    _m: *const mjModel,
-    _con: *const mjrContext,
-    _meshid: c_int,
-) {
-    pending("mjr_uploadMesh");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mjr_uploadHField(
-    _m: *const mjModel,
-    _con: *const mjrContext,
-    _hfieldid: c_int,
-) {
-    pending("mjr_uploadHField");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mjr_restoreBuffer(_con: *const mjrContext) {
-    pending("mjr_restoreBuffer");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mjr_setBuffer(_framebuffer: c_int, _con: *mut mjrContext) {
-    pending("mjr_setBuffer");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mjr_readPixels(
-    _rgb: *mut c_uchar,
-    _depth: *mut f32,
-    _viewport: mjrRect,
-    _con: *const mjrContext,
-) {
-    pending("mjr_readPixels");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mjr_drawPixels(
-    _rgb: *const c_uchar,
-    _depth: *const f32,
-    _viewport: mjrRect,
-    _con: *const mjrContext,
-) {
-    pending("mjr_drawPixels");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mjr_blitBuffer(
-    _src: mjrRect,
-    _dst: mjrRect,
-    _flg_color: c_int,
-    _flg_depth: c_int,
-    _con: *const mjrContext,
-) {
-    pending("mjr_blitBuffer");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mjr_setAux(_index: c_int, _con: *const mjrContext) {
-    pending("mjr_setAux");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mjr_blitAux(
-    _index: c_int,
-    _src: mjrRect,
-    _left: c_int,
-    _bottom: c_int,
-    _con: *const mjrContext,
-) {
-    pending("mjr_blitAux");
-}
+use std::os::raw::{c_char, c_int};
 
 #[no_mangle]
 pub unsafe extern "C" fn mjr_text(
@@ -150,12 +31,6 @@ pub unsafe extern "C" fn mjr_overlay(
     _con: *const mjrContext,
 ) {
     pending("mjr_overlay");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mjr_maxViewport(_con: *const mjrContext) -> mjrRect {
-    pending("mjr_maxViewport");
-    unsafe { std::mem::zeroed() }
 }
 
 #[no_mangle]
@@ -196,28 +71,6 @@ pub unsafe extern "C" fn mjr_render(
     _con: *const mjrContext,
 ) {
     pending("mjr_render");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mjr_finish() {
-    pending("mjr_finish");
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mjr_getError() -> c_int {
-    pending("mjr_getError");
-    0
-}
-
-#[no_mangle]
-pub unsafe extern "C" fn mjr_findRect(
-    _x: c_int,
-    _y: c_int,
-    _nrect: c_int,
-    _rect: *const mjrRect,
-) -> c_int {
-    pending("mjr_findRect");
-    0
 }
 
 #[no_mangle]
