@@ -362,39 +362,7 @@ int mj_setLengthRange(mjModel *m,
                       char *error,
                       int error_sz);
 
-void mjr_text(int _font,
-              const char *_txt,
-              const mjrContext *_con,
-              float _x,
-              float _y,
-              float _r,
-              float _g,
-              float _b);
-
-void mjr_overlay(int _font,
-                 int _gridpos,
-                 mjrRect _viewport,
-                 const char *_overlay,
-                 const char *_overlay2,
-                 const mjrContext *_con);
-
-void mjr_rectangle(mjrRect _viewport, float _r, float _g, float _b, float _a);
-
-void mjr_label(mjrRect _viewport,
-               int _font,
-               const char *_txt,
-               float _r,
-               float _g,
-               float _b,
-               float _a,
-               float _rt,
-               float _gt,
-               float _bt,
-               const mjrContext *_con);
-
 void mjr_figure(mjrRect _viewport, mjvFigure *_fig, const mjrContext *_con);
-
-void mjr_render(mjrRect _viewport, mjvScene *_scn, const mjrContext *_con);
 
 void mjui_update(int _section,
                  int _item,
@@ -457,6 +425,38 @@ void mjr_finish(void);
 int mjr_getError(void);
 
 int mjr_findRect(int x, int y, int nrect, const mjrRect *rect);
+
+void mjr_render(mjrRect viewport, mjvScene *scn, const mjrContext *con);
+
+void mjr_text(int font,
+              const char *txt,
+              const mjrContext *con,
+              float x,
+              float y,
+              float r,
+              float g,
+              float b);
+
+void mjr_overlay(int font,
+                 int gridpos,
+                 mjrRect viewport,
+                 const char *overlay,
+                 const char *overlay2,
+                 const mjrContext *con);
+
+void mjr_rectangle(mjrRect viewport, float r, float g, float b, float a);
+
+void mjr_label(mjrRect viewport,
+               int font,
+               const char *txt,
+               float r,
+               float g,
+               float b,
+               float a,
+               float rt,
+               float gt,
+               float bt,
+               const mjrContext *con);
 
 mjuiThemeSpacing mjui_themeSpacing(int ind);
 

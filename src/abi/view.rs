@@ -240,8 +240,14 @@ pub struct Scene<'a> {
     /// Header: counts, lights, GL cameras, flags (its pointers must not be changed).
     pub raw: &'a mut mjvScene,
     pub geoms: &'a mut [mjvGeom],
+    /// Order of transparent geoms (maxgeom).
+    pub geomorder: &'a mut [i32],
     pub skinvert: &'a mut [f32],
     pub skinnormal: &'a mut [f32],
+    /// Per skin (nskin): faces, first vertex and vertex count.
+    pub skinfacenum: &'a [i32],
+    pub skinvertadr: &'a [i32],
+    pub skinvertnum: &'a [i32],
 }
 
 /// Number of skin vertices the scene's buffers hold.
@@ -275,14 +281,24 @@ impl<'a> Scene<'a> {
     /// buffers 3 floats for each vertex its `skinvertnum` counts.
     pub unsafe fn new(scn: &'a mut mjvScene) -> Self {
         let totvert = scene_skin_vertices(scn);
-        let geoms = view_mut(scn.geoms, scn.maxgeom.max(0) as usize);
+        let maxgeom = scn.maxgeom.max(0) as usize;
+        let geoms = view_mut(scn.geoms, maxgeom);
+        let geomorder = view_mut(scn.geomorder, maxgeom);
+        let nskin = scn.nskin.max(0) as usize;
+        let skinfacenum = view_mut(scn.skinfacenum, nskin);
+        let skinvertadr = view_mut(scn.skinvertadr, nskin);
+        let skinvertnum = view_mut(scn.skinvertnum, nskin);
         let skinvert = view_mut(scn.skinvert, 3 * totvert);
         let skinnormal = view_mut(scn.skinnormal, 3 * totvert);
         Scene {
             raw: scn,
             geoms,
+            geomorder,
             skinvert,
             skinnormal,
+            skinfacenum,
+            skinvertadr,
+            skinvertnum,
         }
     }
 }

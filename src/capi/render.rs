@@ -4,8 +4,8 @@ use super::{errmem, guard};
 use crate::abi::*;
 use crate::engine::{EngineError, Model};
 use crate::render::gl::Gl;
-use crate::render::{context, framebuffer};
-use std::os::raw::{c_int, c_uchar};
+use crate::render::{context, framebuffer, scene, text};
+use std::os::raw::{c_char, c_int, c_uchar};
 
 /// Runs `f` with the loaded GL under `guard`.
 fn with_gl<R>(name: &str, fallback: R, f: impl FnOnce(&'static Gl) -> Result<R, EngineError>) -> R {
@@ -262,4 +262,98 @@ pub unsafe extern "C" fn mjr_findRect(
             x >= r.left && x < r.left + r.width && y >= r.bottom && y < r.bottom + r.height
         })
         .map_or(-1, |i| i as c_int)
+}
+
+/// A C string's bytes (empty for NULL).
+unsafe fn bytes<'a>(s: *const c_char) -> &'a [u8] {
+    if s.is_null() {
+        &[]
+    } else {
+        std::ffi::CStr::from_ptr(s).to_bytes()
+    }
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjr_render(viewport: mjrRect, scn: *mut mjvScene, con: *const mjrContext) {
+    let (Some(scn), Some(con)) = (scn.as_mut(), context_ref("mjr_render", con)) else {
+        return errmem::error("mjr_render: NULL scene");
+    };
+    with_gl("mjr_render", (), |gl| {
+        let mut view = crate::abi::view::Scene::new(scn);
+        scene::render(gl, viewport, &mut view, con)
+    })
+}
+
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn mjr_text(
+    font: c_int,
+    txt: *const c_char,
+    con: *const mjrContext,
+    x: f32,
+    y: f32,
+    r: f32,
+    g: f32,
+    b: f32,
+) {
+    let Some(con) = context_ref("mjr_text", con) else {
+        return;
+    };
+    let txt = bytes(txt);
+    with_gl("mjr_text", (), |gl| {
+        text::text(gl, font, txt, con, x, y, [r, g, b]);
+        Ok(())
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjr_overlay(
+    font: c_int,
+    gridpos: c_int,
+    viewport: mjrRect,
+    overlay: *const c_char,
+    overlay2: *const c_char,
+    con: *const mjrContext,
+) {
+    let Some(con) = context_ref("mjr_overlay", con) else {
+        return;
+    };
+    let (o1, o2) = (bytes(overlay), bytes(overlay2));
+    with_gl("mjr_overlay", (), |gl| {
+        text::overlay(gl, font, gridpos, viewport, o1, o2, con);
+        Ok(())
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjr_rectangle(viewport: mjrRect, r: f32, g: f32, b: f32, a: f32) {
+    with_gl("mjr_rectangle", (), |gl| {
+        text::rectangle(gl, viewport, [r, g, b, a]);
+        Ok(())
+    })
+}
+
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn mjr_label(
+    viewport: mjrRect,
+    font: c_int,
+    txt: *const c_char,
+    r: f32,
+    g: f32,
+    b: f32,
+    a: f32,
+    rt: f32,
+    gt: f32,
+    bt: f32,
+    con: *const mjrContext,
+) {
+    let Some(con) = context_ref("mjr_label", con) else {
+        return;
+    };
+    let txt = (!txt.is_null()).then(|| bytes(txt));
+    with_gl("mjr_label", (), |gl| {
+        text::label(gl, viewport, font, txt, [r, g, b, a], [rt, gt, bt], con);
+        Ok(())
+    })
 }

@@ -669,3 +669,17 @@ pub mod consts {
     pub const GL_UNSIGNED_INT: u32 = 0x1405;
     pub const GL_VERTEX_ARRAY: u32 = 0x8074;
 }
+
+impl Gl {
+    /// glCallLists of one byte per list offset (text through font lists).
+    pub fn call_lists_bytes(&self, text: &[u8]) {
+        // SAFETY: GL reads text.len() bytes.
+        unsafe {
+            self.glCallLists(
+                text.len() as i32,
+                consts::GL_UNSIGNED_BYTE,
+                text.as_ptr().cast(),
+            )
+        }
+    }
+}

@@ -9,5 +9,7 @@ pub mod context;
 mod font_data;
 pub mod framebuffer;
 pub mod gl;
+pub mod scene;
 mod shapes;
+pub mod text;
 mod util;
