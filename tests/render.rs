@@ -9,9 +9,9 @@ use common::*;
 
 const OSMESA_H: &str = "/usr/include/GL/osmesa.h";
 
-fn compile(lib: Lib) -> std::path::PathBuf {
-    let src = root().join("capi-tests/render_context.c");
-    let out = work_dir("render").join(format!("render_context-{}", lib.name()));
+fn compile(name: &str, lib: Lib) -> std::path::PathBuf {
+    let src = root().join(format!("capi-tests/{name}.c"));
+    let out = work_dir("render").join(format!("{name}-{}", lib.name()));
     let (inc, dir) = match lib {
         Lib::Ref => (
             "/usr/include".to_string(),
@@ -30,19 +30,26 @@ fn compile(lib: Lib) -> std::path::PathBuf {
         .arg(format!("-Wl,-rpath,{dir}"))
         .status()
         .unwrap();
-    assert!(status.success(), "render_context.c does not compile");
+    assert!(status.success(), "{name}.c does not compile");
     out
 }
 
-#[test]
-fn context_matches_reference() {
+fn require_osmesa() {
     require_reference();
     our_lib();
     assert!(
         std::path::Path::new(OSMESA_H).exists(),
         "{OSMESA_H} missing: install libosmesa6-dev (capi-tests/run-all does it)"
     );
-    let (r, o) = (compile(Lib::Ref), compile(Lib::Ours));
+}
+
+#[test]
+fn context_matches_reference() {
+    require_osmesa();
+    let (r, o) = (
+        compile("render_context", Lib::Ref),
+        compile("render_context", Lib::Ours),
+    );
     let mut files = models();
     files.extend(
         main_corpus_files()
@@ -84,4 +91,79 @@ fn context_matches_reference() {
         ),
     );
     assert!(draws > 10 * files.len(), "only {draws} lists drawn");
+}
+
+/// Runs `prog` of both libraries over the models in chunks; returns every differing line with
+/// its model, and the reference's output.
+fn differences(name: &str, files: &[String], chunk: usize) -> (Vec<String>, String) {
+    let (r, o) = (compile(name, Lib::Ref), compile(name, Lib::Ours));
+    let chunks: Vec<&[String]> = files.chunks(chunk).collect();
+    let results = par_map(&chunks, |_, chunk| {
+        let args: Vec<&str> = chunk.iter().map(String::as_str).collect();
+        let reference = run(&r, &args, &[], 1200);
+        let ours = run(&o, &args, &[], 1200);
+        (
+            text(&reference.stdout),
+            text(&ours.stdout),
+            text(&ours.stderr),
+        )
+    });
+    let (mut differ, mut all) = (Vec::new(), String::new());
+    for (reference, ours, stderr) in &results {
+        all.push_str(reference);
+        let mut model = "";
+        for (a, b) in reference
+            .lines()
+            .zip(ours.lines().chain(std::iter::repeat("")))
+        {
+            if a.starts_with("model ") {
+                model = a;
+            }
+            if a != b {
+                differ.push(format!("{model}\n reference: {a}\n ours:      {b}"));
+            }
+        }
+        if reference.lines().count() != ours.lines().count() {
+            differ.push(format!("output ends differently\n{stderr}"));
+        }
+    }
+    (differ, all)
+}
+
+/// mjr_render over every rendering flag, labels, transparency, stereo, frames, cameras and the
+/// model transform, in the window and offscreen buffers, plus text, overlays, rectangles and
+/// labels (capi-tests/render_scene.c): color and depth identical to 2.2.2's.
+#[test]
+fn scene_matches_reference() {
+    require_osmesa();
+    let mut files = models();
+    files.extend(
+        main_corpus_files()
+            .iter()
+            .map(|p| p.to_string_lossy().into_owned()),
+    );
+    let (differ, all) = differences("render_scene", &files, 6);
+    let frames = all.lines().filter(|l| l.contains(" rgb ")).count();
+    let lit = all
+        .lines()
+        .filter(|l| l.contains(" rgb ") && !l.contains(" lit 0 "))
+        .count();
+    report(
+        "render-scene",
+        &format!(
+            "mjr_render and 2D drawing: {} models, {frames} frames (color and depth), {} differ\n",
+            files.len(),
+            differ.len()
+        ),
+    );
+    assert!(
+        differ.is_empty(),
+        "{} of {frames} frames differ:\n{}",
+        differ.len(),
+        differ[..differ.len().min(20)].join("\n")
+    );
+    assert!(
+        frames > 20 * files.len() && lit > frames / 2,
+        "{frames} frames, {lit} lit"
+    );
 }
