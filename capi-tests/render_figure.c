@@ -49,6 +49,22 @@ static void finish(const char* name) {
          fig.yaxispixel[1], fig.xaxisdata[0], fig.xaxisdata[1], fig.yaxisdata[0],
          fig.yaxisdata[1], fig.range[0][0], fig.range[0][1], fig.range[1][0], fig.range[1][1],
          fig.highlightid, glGetError(), fnv(rgb, sizeof(rgb)));
+  // GL state mjr_figure leaves behind
+  GLint mode, vp[4], base;
+  GLfloat color[4], width, raster[4], proj[16];
+  glGetIntegerv(GL_MATRIX_MODE, &mode);
+  glGetIntegerv(GL_VIEWPORT, vp);
+  glGetIntegerv(GL_LIST_BASE, &base);
+  glGetFloatv(GL_CURRENT_COLOR, color);
+  glGetFloatv(GL_LINE_WIDTH, &width);
+  glGetFloatv(GL_CURRENT_RASTER_POSITION, raster);
+  glGetFloatv(GL_PROJECTION_MATRIX, proj);
+  printf(" state mode %x viewport %d %d %d %d base %d color %a %a %a %a width %a array %d "
+         "blend %d raster %a %a proj %016llx\n",
+         mode, vp[0], vp[1], vp[2], vp[3], base - (GLint)con.baseFontNormal, color[0], color[1],
+         color[2], color[3], width, glIsEnabled(GL_VERTEX_ARRAY), glIsEnabled(GL_BLEND),
+         raster[0], raster[1], fnv(proj, sizeof(proj)));
+  glDisableClientState(GL_VERTEX_ARRAY);
   if (ppmdir) {
     char path[1000];
     snprintf(path, sizeof(path), "%s/%03d.ppm", ppmdir, ncase);
@@ -342,6 +358,58 @@ int main(int argc, char** argv) {
              vps[k].width, vps[k].height);
     draw(name, vps[k]);
   }
+
+  // edge cases
+  reset();
+  lines(3, 100, 0, 1, 1);
+  names(3, "edge");
+  strcpy(fig.xformat, "%0120.2f");
+  strcpy(fig.yformat, "%% %.1f %%");
+  draw("formats long and percent", FULL);
+  strcpy(fig.xformat, "%.1f");
+  strcpy(fig.yformat, "%.2g");
+  fig.linepnt[0] = 1500;
+  fig.linepnt[1] = -3;
+  fig.flg_selection = 1;
+  fig.selection = 0.7f;
+  fig.highlightid = 0;
+  draw("linepnt past line and negative", FULL);
+  reset();
+  lines(2, 101, 0, 1, 1);
+  fig.flg_barplot = 1;
+  fig.figurergba[3] = 0;
+  fig.legendrgba[3] = 0;
+  names(2, "\xe9t\xe9 \x80\xff~");
+  strcpy(fig.title, "caf\xe9  \xc3\xa9t\xc3\xa9");
+  fig.subplot = 1;
+  draw("barplot odd transparent high chars", FULL);
+  reset();
+  lines(2, 50, 0, 1, 1e-6f);
+  fig.range[1][0] = fig.range[1][1] = 0;
+  fig.flg_symmetric = 1;
+  fig.gridsize[0] = fig.gridsize[1] = 4;
+  strcpy(fig.yformat, "%.3g");
+  draw("tiny range symmetric", FULL);
+  reset();
+  lines(1, 3, 0, 1, 1);
+  fig.linedata[0][1] = 3e38f;
+  fig.linedata[0][3] = -3e38f;
+  fig.range[1][0] = fig.range[1][1] = 0;
+  draw("huge values", FULL);
+  reset();
+  lines(2, 40, 0, 1, 1);
+  strcpy(fig.title, "A rather long title that does not fit into a narrow figure at all");
+  draw("long title narrow", rect(100, 100, 150, 200));
+  strcpy(fig.title, "Left  Middle title  Right side text goes here");
+  fig.subplot = 1;
+  draw("subplot neighbours cut", rect(0, 0, 170, 200));
+  clear();
+  mjr_figure(rect(10, 10, 1, 1), &fig, &con);
+  mjr_overlay(mjFONT_NORMAL, mjGRID_TOPLEFT, FULL, "after a one-pixel figure", "x", &con);
+  mjr_figure(rect(10, 10, 40, 30), &fig, &con);
+  mjr_rectangle(rect(200, 200, 50, 50), 1, 0, 0, 0.5f);
+  mjr_text(mjFONT_BIG, "text after figures", &con, 0.3f, 0.5f, 1, 1, 0);
+  finish("figures then text");
 
   // four figures in one frame
   clear();
