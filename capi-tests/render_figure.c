@@ -18,6 +18,12 @@ static mjrContext con;
 static mjvFigure fig;
 static const char* ppmdir = NULL;
 static int ncase = 0;
+static int offscreen = 0;  // read the multisampled offscreen buffer through mjr_readPixels
+
+// a model only for its offscreen buffer: 4 samples at the size of the window
+static const char* xml =
+    "<mujoco><visual><global offwidth='640' offheight='480'/>"
+    "<quality offsamples='4'/></visual><worldbody/></mujoco>";
 
 static unsigned long long fnv(const void* p, size_t n) {
   const unsigned char* b = (const unsigned char*)p;
@@ -42,7 +48,11 @@ static void clear(void) {
 static void finish(const char* name) {
   glFinish();
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, W, H, GL_RGB, GL_UNSIGNED_BYTE, rgb);
+  if (offscreen) {
+    mjr_readPixels(rgb, NULL, rect(0, 0, W, H), &con);
+  } else {
+    glReadPixels(0, 0, W, H, GL_RGB, GL_UNSIGNED_BYTE, rgb);
+  }
   printf("case %d %s: pixel %d %d %d %d data %a %a %a %a range %a %a %a %a hl %d glerr %d "
          "hash %016llx\n",
          ncase, name, fig.xaxispixel[0], fig.xaxispixel[1], fig.yaxispixel[0],
@@ -434,6 +444,41 @@ int main(int argc, char** argv) {
   }
 
   mjr_freeContext(&con);
+
+  // multisampled offscreen buffer
+  mjVFS vfs;
+  mj_defaultVFS(&vfs);
+  mj_makeEmptyFileVFS(&vfs, "figure.xml", (int)strlen(xml));
+  memcpy(vfs.filedata[0], xml, strlen(xml));
+  char error[500] = "";
+  mjModel* m = mj_loadXML("figure.xml", &vfs, error, sizeof(error));
+  if (!m) {
+    fprintf(stderr, "model: %s\n", error);
+    return 1;
+  }
+  mjr_defaultContext(&con);
+  mjr_makeContext(m, &con, 150);
+  mjr_setBuffer(mjFB_OFFSCREEN, &con);
+  offscreen = 1;
+  printf("offscreen %d %d samples %d\n", con.offWidth, con.offHeight, con.offSamples);
+  full_figure();
+  draw("msaa full", FULL);
+  draw("msaa small", rect(33, 21, 287, 190));
+  fig.flg_barplot = 1;
+  fig.gridsize[0] = 11;
+  fig.gridsize[1] = 9;
+  fig.gridwidth = 1.5f;
+  draw("msaa barplot grid", rect(7, 3, 611, 457));
+  reset();
+  lines(5, 1000, -3, 6, 2);
+  names(5, "dense");
+  fig.flg_symmetric = 1;
+  fig.linewidth = 1.3f;
+  fig.highlightid = 4;
+  draw("msaa dense", FULL);
+  mjr_freeContext(&con);
+  mj_deleteModel(m);
+  mj_deleteVFS(&vfs);
   OSMesaDestroyContext(ctx);
   printf("cases %d\n", ncase);
   return 0;
