@@ -50,23 +50,9 @@ pub fn figure(gl: &Gl, viewport: mjrRect, fig: &mut mjvFigure, con: &mjrContext)
         return;
     }
     ortho_pixels(gl, &vp);
-
-    let sy_title = draw_title(gl, fig, con, &vp, pad);
-    let sy_label = draw_xlabel(gl, fig, con, &vp, pad);
-    if sy_title != 0 || sy_label != 0 {
-        let below = if sy_label != 0 { sy_label + pad / 2 } else { 0 };
-        let above = if sy_title != 0 { sy_title + pad } else { 0 };
-        vp.bottom += below;
-        vp.height -= below + above;
-        if vp.width <= 0 || vp.height <= 0 {
-            return;
-        }
-        gl.glViewport(vp.left, vp.bottom, vp.width, vp.height);
-        gl.glMatrixMode(GL_PROJECTION);
-        gl.glLoadIdentity();
-        ortho_pixels(gl, &vp);
+    if !draw_labels(gl, fig, con, &mut vp, pad) {
+        return;
     }
-
     if fig.gridsize[0] > 1 && fig.gridsize[1] > 1 {
         draw_ticks(gl, fig, con, &range, &mut vp, pad);
     }
@@ -81,17 +67,44 @@ pub fn figure(gl: &Gl, viewport: mjrRect, fig: &mut mjvFigure, con: &mjrContext)
     gl.glViewport(vp.left, vp.bottom, vp.width, vp.height);
     fig.xaxispixel = [vp.left, vp.left + vp.width - 1];
     fig.yaxispixel = [vp.bottom, vp.bottom + vp.height - 1];
+    draw_plot(gl, fig, con, &range, &vp, pad);
+}
 
+/// Title and x label; shrinks `vp` by their height. False where 2.2.2 stops (nothing left).
+fn draw_labels(gl: &Gl, fig: &mjvFigure, con: &mjrContext, vp: &mut mjrRect, pad: i32) -> bool {
+    let sy_title = draw_title(gl, fig, con, vp, pad);
+    let sy_label = draw_xlabel(gl, fig, con, vp, pad);
+    if sy_title == 0 && sy_label == 0 {
+        return true;
+    }
+    let below = if sy_label != 0 { sy_label + pad / 2 } else { 0 };
+    let above = if sy_title != 0 { sy_title + pad } else { 0 };
+    vp.bottom += below;
+    vp.height -= below + above;
+    if vp.width <= 0 || vp.height <= 0 {
+        return false;
+    }
+    gl.glViewport(vp.left, vp.bottom, vp.width, vp.height);
     gl.glMatrixMode(GL_PROJECTION);
     gl.glLoadIdentity();
-    gl.glOrtho(
-        -OFFSET as f64,
-        (1.0 + OFFSET) as f64,
-        -OFFSET as f64,
-        (1.0 + OFFSET) as f64,
-        -1.0,
-        1.0,
-    );
+    ortho_pixels(gl, vp);
+    true
+}
+
+/// The pane in the plot viewport `vp`: background, grid, lines, selection, legend and
+/// highlighted line.
+fn draw_plot(
+    gl: &Gl,
+    fig: &mjvFigure,
+    con: &mjrContext,
+    range: &[[f32; 2]; 2],
+    vp: &mjrRect,
+    pad: i32,
+) {
+    gl.glMatrixMode(GL_PROJECTION);
+    gl.glLoadIdentity();
+    let (lo, hi) = (-OFFSET as f64, (1.0 + OFFSET) as f64);
+    gl.glOrtho(lo, hi, lo, hi, -1.0, 1.0);
     fill_unit_square(gl, &fig.panergba);
 
     gl.glEnableClientState(GL_VERTEX_ARRAY);
@@ -100,7 +113,7 @@ pub fn figure(gl: &Gl, viewport: mjrRect, fig: &mut mjvFigure, con: &mjrContext)
     }
     gl.glMatrixMode(GL_PROJECTION);
     gl.glLoadIdentity();
-    ortho_data(gl, &range);
+    ortho_data(gl, range);
     for n in (0..mjMAXLINE).rev() {
         if fig.linepnt[n] != 0 {
             draw_line(gl, fig, n, fig.linewidth);
@@ -117,14 +130,14 @@ pub fn figure(gl: &Gl, viewport: mjrRect, fig: &mut mjvFigure, con: &mjrContext)
 
     let mut hlight = fig.highlightid;
     if fig.flg_legend != 0 {
-        match draw_legend(gl, fig, con, &vp, pad) {
+        match draw_legend(gl, fig, con, vp, pad) {
             None => return,
             Some(Some(n)) => hlight = n,
             Some(None) => {}
         }
     }
     if (0..mjMAXLINE as i32).contains(&hlight) {
-        draw_highlight(gl, fig, con, &range, hlight as usize);
+        draw_highlight(gl, fig, con, range, hlight as usize);
     }
     gl.glDisableClientState(GL_VERTEX_ARRAY);
 }
@@ -539,20 +552,7 @@ fn draw_legend(
         hcnt = (vp.height - pad - hy).checked_div(ch).unwrap_or(-1);
     }
     if cnt != 0 {
-        let (x0, y0) = (
-            (vp.width - 2 * pad - lw) as f64,
-            (vp.height - 2 * pad - lh) as f64,
-        );
-        let (x1, y1) = (vp.width as f64, vp.height as f64);
-        gl.glEnable(GL_BLEND);
-        gl.color4fv(&fig.legendrgba);
-        gl.glBegin(GL_QUADS);
-        gl.glVertex2d(x0, y0);
-        gl.glVertex2d(x0, y1);
-        gl.glVertex2d(x1, y1);
-        gl.glVertex2d(x1, y0);
-        gl.glEnd();
-        gl.glDisable(GL_BLEND);
+        legend_box(gl, fig, vp, (lw, lh), pad);
     }
     let mut hlight = None;
     for (cnt, (n, name)) in (0..).zip(&names) {
@@ -568,6 +568,22 @@ fn draw_legend(
         }
     }
     Some(hlight)
+}
+
+/// The legend's background, `size` of text plus padding, at the top right of the pane.
+fn legend_box(gl: &Gl, fig: &mjvFigure, vp: &mjrRect, size: (i32, i32), pad: i32) {
+    let x0 = (vp.width - 2 * pad - size.0) as f64;
+    let y0 = (vp.height - 2 * pad - size.1) as f64;
+    let (x1, y1) = (vp.width as f64, vp.height as f64);
+    gl.glEnable(GL_BLEND);
+    gl.color4fv(&fig.legendrgba);
+    gl.glBegin(GL_QUADS);
+    gl.glVertex2d(x0, y0);
+    gl.glVertex2d(x0, y1);
+    gl.glVertex2d(x1, y1);
+    gl.glVertex2d(x1, y0);
+    gl.glEnd();
+    gl.glDisable(GL_BLEND);
 }
 
 /// Float `i` of the flattened line data; 2.2.2 reads the two floats before the data (the
