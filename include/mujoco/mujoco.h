@@ -362,8 +362,6 @@ int mj_setLengthRange(mjModel *m,
                       char *error,
                       int error_sz);
 
-void mjr_figure(mjrRect _viewport, mjvFigure *_fig, const mjrContext *_con);
-
 void mjui_update(int _section,
                  int _item,
                  const mjUI *_ui,
@@ -457,6 +455,8 @@ void mjr_label(mjrRect viewport,
                float gt,
                float bt,
                const mjrContext *con);
+
+void mjr_figure(mjrRect viewport, mjvFigure *fig, const mjrContext *con);
 
 mjuiThemeSpacing mjui_themeSpacing(int ind);
 

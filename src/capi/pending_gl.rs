@@ -1,4 +1,4 @@
-//! Visualization (mjv_), OpenGL rendering (mjr_) and UI (mjui_) entry points not implemented yet:
+//! UI (mjui_) entry points not implemented yet:
 //! each reports itself through mju_error.
 
 #![allow(unused_unsafe)]
@@ -6,15 +6,6 @@
 use super::pending;
 use crate::abi::*;
 use std::os::raw::c_int;
-
-#[no_mangle]
-pub unsafe extern "C" fn mjr_figure(
-    _viewport: mjrRect,
-    _fig: *mut mjvFigure,
-    _con: *const mjrContext,
-) {
-    pending("mjr_figure");
-}
 
 #[no_mangle]
 pub unsafe extern "C" fn mjui_update(

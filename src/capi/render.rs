@@ -4,7 +4,7 @@ use super::{errmem, guard};
 use crate::abi::*;
 use crate::engine::{EngineError, Model};
 use crate::render::gl::Gl;
-use crate::render::{context, framebuffer, scene, text};
+use crate::render::{context, figure, framebuffer, scene, text};
 use std::os::raw::{c_char, c_int, c_uchar};
 
 /// Runs `f` with the loaded GL under `guard`.
@@ -354,6 +354,24 @@ pub unsafe extern "C" fn mjr_label(
     let txt = (!txt.is_null()).then(|| bytes(txt));
     with_gl("mjr_label", (), |gl| {
         text::label(gl, viewport, font, txt, [r, g, b, a], [rt, gt, bt], con);
+        Ok(())
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjr_figure(
+    viewport: mjrRect,
+    fig: *mut mjvFigure,
+    con: *const mjrContext,
+) {
+    let Some(con) = context_ref("mjr_figure", con) else {
+        return;
+    };
+    let Some(fig) = fig.as_mut() else {
+        return errmem::error("mjr_figure: NULL figure");
+    };
+    with_gl("mjr_figure", (), |gl| {
+        figure::figure(gl, viewport, fig, con);
         Ok(())
     })
 }

@@ -5,6 +5,7 @@
 #![allow(clippy::needless_range_loop)] // index loops mirror the reference algorithms
 
 pub mod context;
+pub mod figure;
 #[rustfmt::skip]
 mod font_data;
 pub mod framebuffer;

@@ -27,10 +27,10 @@ pub fn char_width(con: &mjrContext, c: u8, big: bool) -> i32 {
     if c < 127 {
         return table[c];
     }
-    if big {
-        tail.get(c - 127).copied().unwrap_or(0)
-    } else {
-        con.charWidthBig[c - 127]
+    match (big, c - 127) {
+        (false, k) if k < 127 => con.charWidthBig[k],
+        (false, k) => tail[k - 127],
+        (true, k) => tail.get(k).copied().unwrap_or(0),
     }
 }
 
