@@ -120,7 +120,8 @@ impl ui::host::Host for CHost {
     }
     fn predicate(&self, ui: &mjUI, category: c_int) -> c_int {
         // SAFETY: the UI's predicate is a C function taking its userdata.
-        ui.predicate.map_or(1, |f| unsafe { f(category, ui.userdata) })
+        ui.predicate
+            .map_or(1, |f| unsafe { f(category, ui.userdata) })
     }
 }
 

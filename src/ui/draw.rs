@@ -106,7 +106,12 @@ pub fn update(
         0..nsect
     };
     for n in sections {
-        draw_section(&cx, n, section < 0 || item < 0, (section >= 0).then_some(item));
+        draw_section(
+            &cx,
+            n,
+            section < 0 || item < 0,
+            (section >= 0).then_some(item),
+        );
     }
     if let Some(it) = item_at(ui, ui.mousesect, ui.mouseitem) {
         if locate::is(it, mjITEM_SELECT) {
@@ -122,8 +127,8 @@ pub fn update(
 fn draw_section(cx: &Ctx, n: i32, whole: bool, only: Option<i32>) {
     let (pen, ui) = (&cx.pen, cx.pen.ui);
     let s = &ui.sect[n as usize];
-    let maxwidth = (s.rtitle.width - 2 * cx.itemside - pen.scl(ui.spacing.itemmid)) / 2
-        - 2 * cx.texthor;
+    let maxwidth =
+        (s.rtitle.width - 2 * cx.itemside - pen.scl(ui.spacing.itemmid)) / 2 - 2 * cx.texthor;
     if whole {
         if s.state < 2 {
             pen.gradient(s.rtitle, &ui.color.sectpane, &ui.color.secttitle);
@@ -167,11 +172,7 @@ fn draw_item(cx: &Ctx, s: &mjuiSection, it: &mjuiItem, (n, i): (i32, i32), maxwi
     let c = &ui.color;
     let active = enabled(it.state, ui, cx.host);
     let mut col = Colors {
-        font: if active {
-            c.fontactive
-        } else {
-            c.fontinactive
-        },
+        font: if active { c.fontactive } else { c.fontinactive },
         decor: c.decorinactive,
         decor2: c.decorinactive2,
         active,
@@ -232,7 +233,13 @@ fn draw_static(cx: &Ctx, it: &mjuiItem, label_x: i32, col: &Colors) {
     for k in 0..n {
         let y = r.bottom + cx.textver + (n - k - 1) * line;
         let txt = &it.multi().name[k as usize];
-        pen.name(txt, r.left + cx.texthor, y, r.width - 2 * cx.texthor, &col.font);
+        pen.name(
+            txt,
+            r.left + cx.texthor,
+            y,
+            r.width - 2 * cx.texthor,
+            &col.font,
+        );
     }
 }
 
@@ -350,8 +357,8 @@ fn draw_slider(cx: &Ctx, it: &mjuiItem, label_x: i32, col: &mut Colors) {
         r.width = pen.scl(2);
         r.height = cx.textver;
         for k in 1..sl.divisions as i32 {
-            let left = (it.rect.left - r.width / 2) as f64
-                + (it.rect.width * k) as f64 / sl.divisions;
+            let left =
+                (it.rect.left - r.width / 2) as f64 + (it.rect.width * k) as f64 / sl.divisions;
             r.left = left as i32;
             pen.rect(r, &ui.color.sectpane, None);
         }
@@ -363,7 +370,13 @@ fn draw_slider(cx: &Ctx, it: &mjuiItem, label_x: i32, col: &mut Colors) {
         format_c(c"%.3g", &[value])
     };
     let (x, y) = (it.rect.left + cx.texthor, it.rect.bottom + cx.textver);
-    pen.text(text.as_bytes(), x, y, it.rect.width - 2 * cx.texthor, &col.font);
+    pen.text(
+        text.as_bytes(),
+        x,
+        y,
+        it.rect.width - 2 * cx.texthor,
+        &col.font,
+    );
 }
 
 fn draw_edit(cx: &Ctx, it: &mjuiItem, (n, i): (i32, i32), label_x: i32, col: &mut Colors) {

@@ -41,8 +41,9 @@ fn field_len(t: &[u8]) -> usize {
     i
 }
 
-/// The numbers sscanf(text, "%lf %lf ...") converts, up to mjMAXUIEDIT: a field that is not
-/// a whole number (such as "1e" or "-") ends the conversion.
+/// The numbers sscanf(text, "%lf %lf ...") converts, up to mjMAXUIEDIT: a field without
+/// digits (such as "-" or ".") ends the conversion; an exponent without digits ("1e-") is
+/// taken and ignored, as glibc does.
 pub fn scan(text: &[u8]) -> Vec<f64> {
     let mut out = Vec::new();
     let mut i = 0;
@@ -51,7 +52,11 @@ pub fn scan(text: &[u8]) -> Vec<f64> {
             i += 1;
         }
         let n = field_len(&text[i..]);
-        let field = std::str::from_utf8(&text[i..i + n]).unwrap_or("");
+        let mut field = &text[i..i + n];
+        if let [head @ .., b'e' | b'E', b'+' | b'-'] | [head @ .., b'e' | b'E'] = field {
+            field = head;
+        }
+        let field = std::str::from_utf8(field).unwrap_or("");
         match field.parse::<f64>() {
             Ok(v) if n > 0 => out.push(v),
             _ => break,
@@ -68,7 +73,10 @@ fn parse(text: &[u8], it: &mjuiItem) -> Result<Vec<f64>, i32> {
     if val.len() as i32 != e.nelem {
         return Err(1);
     }
-    let out_of_range = val.iter().zip(&e.range).any(|(&v, r)| r[0] < r[1] && (v < r[0] || v > r[1]));
+    let out_of_range = val
+        .iter()
+        .zip(&e.range)
+        .any(|(&v, r)| r[0] < r[1] && (v < r[0] || v > r[1]));
     if out_of_range {
         return Err(2);
     }

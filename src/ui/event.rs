@@ -54,7 +54,11 @@ fn set_slider(it: &mjuiItem, ui: &mjUI, state: &mjuiState, host: &dyn Host) {
     let (rx, _) = mouse_in_rect(it.rect, ui, state);
     let sl = it.slider();
     let rx = rx.clamp_c();
-    let div = if 1.0 > sl.divisions { 1.0 } else { sl.divisions };
+    let div = if 1.0 > sl.divisions {
+        1.0
+    } else {
+        sl.divisions
+    };
     let rx = (round(rx * sl.divisions) as f64 / div).clamp_c();
     let val = sl.range[0] * (1.0 - rx) + sl.range[1] * rx;
     if locate::is(it, mjITEM_SLIDERINT) {
@@ -88,7 +92,8 @@ pub fn event(
 ) -> Result<Option<ItemId>, EngineError> {
     ui.editchanged = std::ptr::null_mut();
     let t = state.r#type;
-    let mouse = t == mjEVENT_PRESS as i32 || t == mjEVENT_MOVE as i32 || t == mjEVENT_RELEASE as i32;
+    let mouse =
+        t == mjEVENT_PRESS as i32 || t == mjEVENT_MOVE as i32 || t == mjEVENT_RELEASE as i32;
     if mouse && state.button != mjtButton_::mjBUTTON_LEFT as i32 {
         if state.button == mjtButton_::mjBUTTON_RIGHT as i32 {
             if t == mjEVENT_PRESS as i32 {
@@ -383,7 +388,8 @@ fn insert_key(ui: &mut mjUI, key: i32, shift: bool, it: &mjuiItem) {
 }
 
 fn matches(state: &mjuiState, modifier: i32, key: i32) -> bool {
-    let m = (state.control != 0) as i32 + 2 * (state.shift != 0) as i32 + 4 * (state.alt != 0) as i32;
+    let m =
+        (state.control != 0) as i32 + 2 * (state.shift != 0) as i32 + 4 * (state.alt != 0) as i32;
     key != 0 && state.key == key && m == modifier
 }
 
@@ -394,7 +400,8 @@ fn shortcut(
     state: &mut mjuiState,
 ) -> Result<Option<ItemId>, EngineError> {
     let nsect = ui.nsect.clamp(0, mjMAXUISECT as i32) as usize;
-    if let Some(n) = (0..nsect).find(|&n| matches(state, ui.sect[n].modifier, ui.sect[n].shortcut)) {
+    if let Some(n) = (0..nsect).find(|&n| matches(state, ui.sect[n].modifier, ui.sect[n].shortcut))
+    {
         for s in ui.sect[..nsect].iter_mut().filter(|s| s.state < 2) {
             s.state = 0;
         }

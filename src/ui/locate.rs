@@ -112,7 +112,12 @@ pub fn radioline_seps(it: &mjuiItem, con: &mjrContext) -> Vec<i32> {
 }
 
 /// Radioline element under the mouse, if any.
-pub fn find_radioline(it: &mjuiItem, ui: &mjUI, state: &mjuiState, con: &mjrContext) -> Option<i32> {
+pub fn find_radioline(
+    it: &mjuiItem,
+    ui: &mjUI,
+    state: &mjuiState,
+    con: &mjrContext,
+) -> Option<i32> {
     let sep = radioline_seps(it, con);
     let (rx, _) = mouse_in_rect(it.rect, ui, state);
     let x = round(rx * it.rect.width as f64);
