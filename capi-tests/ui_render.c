@@ -353,6 +353,7 @@ static void script(void) {
     click_item(&ui0, s, -1, 0.3, 0.5);
   }
   // double click: all sections like this one (closed), then open all
+  wheel(5, 5, 1000);
   at(&ui0, ui0.sect[0].rtitle, 0.5, 0.5, &x, &y);
   press(x, y, mjBUTTON_LEFT);
   release(x, y, mjBUTTON_LEFT);
@@ -431,6 +432,9 @@ static void script(void) {
   key(mjKEY_END, 0, 0, 0);
   type_text("AbC", 0);
   type_text("X-=[]\\;',./`", 1);
+  key(127, 0, 0, 0);
+  key(128, 0, 0, 0);
+  key(mjKEY_LEFT, 0, 0, 0);
   key(mjKEY_LEFT, 0, 0, 0);
   key(mjKEY_LEFT, 0, 0, 0);
   key(mjKEY_BACKSPACE, 0, 0, 0);
@@ -500,6 +504,11 @@ static void script(void) {
   type_text("+0.", 0);
   click_item(&ui0, 1, -1, 0.5, 0.5);
   click_item(&ui0, 1, -1, 0.5, 0.5);
+  click_item(&ui0, 3, 4, 0.5, 0.5);
+  key(mjKEY_RIGHT, 1, 0, 0);
+  for (int k = 0; k < 30; k++) key(mjKEY_BACKSPACE, 0, 0, 0);
+  type_text("0.25 -1.5 0", 0);
+  key(mjKEY_ENTER, 0, 0, 0);
   click_item(&ui0, 3, 5, 0.5, 0.5);
   click_item(&ui0, 3, 6, 0.5, 0.5);
   click_item(&ui0, 3, 7, 0.5, 0.5);

@@ -239,3 +239,30 @@ pub fn set_cursor(r: mjrRect, ui: &mut mjUI, state: &mjuiState, con: &mjrContext
         ui.editcursor = best;
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::scan;
+
+    /// Counts and first values glibc's sscanf gives for these texts.
+    #[test]
+    fn scan_as_glibc() {
+        let cases: [(&str, &[f64]); 12] = [
+            ("1e 2", &[1.0, 2.0]),
+            ("1e- 2", &[1.0, 2.0]),
+            ("1.5E+0.5", &[1.5, 0.5]),
+            ("-.5", &[-0.5]),
+            ("+", &[]),
+            ("1..2", &[1.0, 0.2]),
+            ("1e5e3", &[1e5]),
+            ("1-2", &[1.0, -2.0]),
+            ("1 . 2", &[1.0]),
+            ("-infinity 2", &[f64::NEG_INFINITY, 2.0]),
+            ("in", &[]),
+            ("1 2 3 4 5 6 7 8", &[1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0]),
+        ];
+        for (text, want) in cases {
+            assert_eq!(scan(text.as_bytes()), want, "{text}");
+        }
+    }
+}
