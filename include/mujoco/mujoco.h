@@ -362,16 +362,6 @@ int mj_setLengthRange(mjModel *m,
                       char *error,
                       int error_sz);
 
-void mjui_update(int _section,
-                 int _item,
-                 const mjUI *_ui,
-                 const mjuiState *_state,
-                 const mjrContext *_con);
-
-mjuiItem *mjui_event(mjUI *_ui, mjuiState *_state, const mjrContext *_con);
-
-void mjui_render(mjUI *_ui, const mjuiState *_state, const mjrContext *_con);
-
 void mj_printFormattedModel(const mjModel *m, const char *filename, const char *float_format);
 
 void mj_printModel(const mjModel *m, const char *filename);
@@ -467,6 +457,16 @@ void mjui_add(mjUI *ui, const mjuiDef *def);
 void mjui_addToSection(mjUI *ui, int sect, const mjuiDef *def);
 
 void mjui_resize(mjUI *ui, const mjrContext *con);
+
+void mjui_update(int section,
+                 int item,
+                 const mjUI *ui,
+                 const mjuiState *state,
+                 const mjrContext *con);
+
+mjuiItem *mjui_event(mjUI *ui, mjuiState *state, const mjrContext *con);
+
+void mjui_render(mjUI *ui, const mjuiState *state, const mjrContext *con);
 
 void mju_zero3(mjtNum *res);
 

@@ -7,7 +7,6 @@ pub mod errmem;
 pub mod globals;
 pub mod io;
 pub mod lengthrange;
-pub mod pending_gl;
 pub mod print;
 pub mod render;
 pub mod ui;

@@ -64,3 +64,123 @@ pub unsafe extern "C" fn mjui_resize(ui: *mut mjUI, con: *const mjrContext) {
         })
     }
 }
+
+/// Item data and the predicate reached through the C pointers of mjUI (the caller of
+/// mjui_update and mjui_event vouches for them, as with 2.2.2).
+struct CHost;
+
+impl CHost {
+    fn ptr<T>(it: &mjuiItem, i: usize) -> Option<*mut T> {
+        (!it.pdata.is_null()).then(|| (it.pdata as *mut T).wrapping_add(i))
+    }
+}
+
+impl ui::host::Host for CHost {
+    fn int(&self, it: &mjuiItem, i: usize) -> i32 {
+        // SAFETY: an int item's pdata points to its ints.
+        Self::ptr::<i32>(it, i).map_or(0, |p| unsafe { p.read_unaligned() })
+    }
+    fn set_int(&self, it: &mjuiItem, i: usize, v: i32) {
+        // SAFETY: as in `int`.
+        Self::ptr::<i32>(it, i).inspect(|&p| unsafe { p.write_unaligned(v) });
+    }
+    fn byte(&self, it: &mjuiItem) -> u8 {
+        // SAFETY: a checkbyte's pdata points to its byte.
+        Self::ptr::<u8>(it, 0).map_or(0, |p| unsafe { p.read() })
+    }
+    fn set_byte(&self, it: &mjuiItem, v: u8) {
+        // SAFETY: as in `byte`.
+        Self::ptr::<u8>(it, 0).inspect(|&p| unsafe { p.write(v) });
+    }
+    fn num(&self, it: &mjuiItem, i: usize) -> f64 {
+        // SAFETY: a number item's pdata points to its mjtNums.
+        Self::ptr::<f64>(it, i).map_or(0.0, |p| unsafe { p.read_unaligned() })
+    }
+    fn set_num(&self, it: &mjuiItem, i: usize, v: f64) {
+        // SAFETY: as in `num`.
+        Self::ptr::<f64>(it, i).inspect(|&p| unsafe { p.write_unaligned(v) });
+    }
+    fn text(&self, it: &mjuiItem) -> Vec<u8> {
+        let mut out = Vec::new();
+        for i in 0..mjMAXUINAME {
+            // SAFETY: a text item's pdata points to mjMAXUINAME chars (or a shorter string).
+            let c = Self::ptr::<u8>(it, i).map_or(0, |p| unsafe { p.read() });
+            if c == 0 {
+                break;
+            }
+            out.push(c);
+        }
+        out
+    }
+    fn set_text(&self, it: &mjuiItem, text: &[u8; mjMAXUINAME]) {
+        if let Some(p) = Self::ptr::<u8>(it, 0) {
+            // SAFETY: a text item's pdata has room for mjMAXUINAME chars.
+            unsafe { std::ptr::copy_nonoverlapping(text.as_ptr(), p, mjMAXUINAME) }
+        }
+    }
+    fn predicate(&self, ui: &mjUI, category: c_int) -> c_int {
+        // SAFETY: the UI's predicate is a C function taking its userdata.
+        ui.predicate
+            .map_or(1, |f| unsafe { f(category, ui.userdata) })
+    }
+}
+
+/// Runs `f` with the loaded GL under `guard`.
+fn with_gl<R>(
+    name: &str,
+    fallback: R,
+    f: impl FnOnce(&'static crate::render::gl::Gl) -> Result<R, crate::engine::EngineError>,
+) -> R {
+    guard(name, fallback, || f(crate::render::context::current(name)?))
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjui_update(
+    section: c_int,
+    item: c_int,
+    ui: *const mjUI,
+    state: *const mjuiState,
+    con: *const mjrContext,
+) {
+    let (Some(ui), Some(state), Some(con)) = (ui.as_ref(), state.as_ref(), con.as_ref()) else {
+        return;
+    };
+    with_gl("mjui_update", (), |gl| {
+        ui::draw::update(gl, section, item, ui, state, con, &CHost)
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjui_event(
+    ui: *mut mjUI,
+    state: *mut mjuiState,
+    con: *const mjrContext,
+) -> *mut mjuiItem {
+    let (Some(ui), Some(state), Some(con)) = (ui.as_mut(), state.as_mut(), con.as_ref()) else {
+        return std::ptr::null_mut();
+    };
+    let changed = with_gl("mjui_event", None, |gl| {
+        let env = ui::event::Env {
+            gl,
+            con,
+            host: &CHost,
+        };
+        ui::event::event(&env, ui, state)
+    });
+    match changed {
+        Some((s, i)) => &mut ui.sect[s].item[i] as *mut mjuiItem,
+        None => std::ptr::null_mut(),
+    }
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn mjui_render(
+    ui: *mut mjUI,
+    state: *const mjuiState,
+    con: *const mjrContext,
+) {
+    let (Some(ui), Some(state), Some(con)) = (ui.as_mut(), state.as_ref(), con.as_ref()) else {
+        return;
+    };
+    with_gl("mjui_render", (), |gl| ui::draw::render(gl, ui, state, con))
+}

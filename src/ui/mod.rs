@@ -2,5 +2,11 @@
 //! drawing. Beside the engine, never inside it; drawing goes through the OpenGL layer.
 
 pub mod build;
+pub mod draw;
+mod edit;
+pub mod event;
+pub mod host;
 pub mod layout;
+mod locate;
+mod paint;
 pub mod theme;

@@ -1,0 +1,79 @@
+//! The UI framework drawn and driven (mjui_update, mjui_event, mjui_render) against 2.2.2
+//! under OSMesa: two simulate-like panels with every item type at several font scales and
+//! themes, then scripted mouse, wheel, key and resize events (capi-tests/ui_render.c). Every
+//! returned item, data value, UI tracking and edit field and the hash of every frame's
+//! pixels must be identical.
+
+mod common;
+
+use common::*;
+
+const OSMESA_H: &str = "/usr/include/GL/osmesa.h";
+
+fn compile(lib: Lib) -> std::path::PathBuf {
+    let src = root().join("capi-tests/ui_render.c");
+    let out = work_dir("render").join(format!("ui_render-{}", lib.name()));
+    let (inc, dir) = match lib {
+        Lib::Ref => (
+            "/usr/include".to_string(),
+            "/usr/lib/x86_64-linux-gnu".to_string(),
+        ),
+        _ => (
+            root().join("include").to_string_lossy().into_owned(),
+            lib_dir().to_string_lossy().into_owned(),
+        ),
+    };
+    let status = std::process::Command::new("gcc")
+        .args(["-std=c11", "-O1", "-Wall", "-o"])
+        .arg(&out)
+        .arg(&src)
+        .args(["-I", &inc, "-L", &dir, "-lmujoco", "-lOSMesa", "-lm"])
+        .arg(format!("-Wl,-rpath,{dir}"))
+        .status()
+        .unwrap();
+    assert!(status.success(), "ui_render.c does not compile");
+    out
+}
+
+#[test]
+fn ui_matches_reference() {
+    require_reference();
+    our_lib();
+    assert!(
+        std::path::Path::new(OSMESA_H).exists(),
+        "{OSMESA_H} missing: install libosmesa6-dev (capi-tests/run-all does it)"
+    );
+    let progs = [compile(Lib::Ref), compile(Lib::Ours)];
+    let outputs = par_map(&progs, |_, p| run(p, &[], &[], 600));
+    let (reference, ours) = (text(&outputs[0].stdout), text(&outputs[1].stdout));
+    let stderr = text(&outputs[1].stderr);
+    let (mut frames, mut events, mut differ) = (0, 0, 0);
+    let mut first = None;
+    for (k, (a, b)) in reference
+        .lines()
+        .zip(ours.lines().chain(std::iter::repeat("")))
+        .enumerate()
+    {
+        frames += a.starts_with("frame ") as usize;
+        events += a.starts_with("event ") as usize;
+        if a != b {
+            differ += 1;
+            first.get_or_insert(format!("line {}:\n  2.2.2: {a}\n  ours:  {b}", k + 1));
+        }
+    }
+    report(
+        "ui-render",
+        &format!(
+            "mjui_update/event/render: {frames} frames, {events} events, {} lines; {differ} \
+             lines differ\n",
+            reference.lines().count()
+        ),
+    );
+    assert!(outputs[0].status.success(), "reference run failed");
+    assert_eq!(differ, 0, "{}\n{stderr}", first.unwrap_or_default());
+    assert_eq!(reference.lines().count(), ours.lines().count(), "{stderr}");
+    assert!(
+        frames > 1000 && events > 1000,
+        "only {frames} frames, {events} events"
+    );
+}
