@@ -4,6 +4,8 @@
 //   render_scene MODEL...        per model, at a state after 40 steps: every rendering flag,
 //                                visual flags and labels, transparency, stereo, frame, cameras,
 //                                model transform, window and offscreen buffers, then overlays
+//   render_scene quick MODEL...  the default case, segmentation and every visual flag only
+//   render_scene 2d MODEL...     also text, overlays, labels, pixels and buffers after the first
 //   RENDER_PPM=DIR render_scene  also writes each frame as DIR/<model>-<case>.ppm
 #define GL_GLEXT_PROTOTYPES
 #include <GL/osmesa.h>
@@ -20,6 +22,7 @@ static unsigned char buffer[4 * W * H];
 static unsigned char rgb[3 * W * H];
 static float depth[W * H];
 static int nmodel;
+static int quick, twod;
 
 static unsigned long long fnv(const void* p, size_t n) {
   const unsigned char* b = (const unsigned char*)p;
@@ -195,6 +198,66 @@ static void overlays(const mjrContext* con, mjrRect r) {
   readback("rectangles-labels", r, con);
 }
 
+// text at every font scale; pixels drawn and blitted; auxiliary buffers
+static void buffers(mjrContext* con, mjrRect full) {
+  mjr_setBuffer(mjFB_WINDOW, con);
+  for (int scale = 50; scale <= 300; scale += 50) {
+    mjr_changeFont(scale, con);
+    mjr_rectangle(full, 0.1f, 0.1f, 0.1f, 1);
+    for (int font = 0; font < 3; font++) {
+      mjr_text(font, "Scale AaBbGgQq 0123 ,.;:", con, 0.02f, 0.8f - 0.25f * font, 1, 1, 0.5f);
+    }
+    mjr_overlay(mjFONT_NORMAL, mjGRID_BOTTOMRIGHT, full, "a\nb", "1\n2", con);
+    char what[100];
+    sprintf(what, "font-scale%d", scale);
+    readback(what, full, con);
+  }
+  mjr_changeFont(mjFONTSCALE_150, con);
+  // pixels drawn with and without depth, at an offset and clipped
+  static unsigned char pix[3 * W * H];
+  static float dep[W * H];
+  for (int i = 0; i < W * H; i++) {
+    pix[3 * i] = i % 251;
+    pix[3 * i + 1] = (i / W) % 256;
+    pix[3 * i + 2] = (i * 7) % 253;
+    dep[i] = (float)(i % 1000) / 1000;
+  }
+  mjr_rectangle(full, 0, 0, 0, 1);
+  mjrRect small = {0, 0, 100, 60};
+  mjr_drawPixels(pix, NULL, small, con);
+  mjrRect off = {W - 50, H - 30, 100, 60};
+  mjr_drawPixels(pix, dep, off, con);
+  mjrRect mid = {120, 80, 64, 48};
+  mjr_drawPixels(pix, dep, mid, con);
+  readback("drawpixels", full, con);
+  // the offscreen buffer blitted into the window, scaled, color and depth
+  mjr_setBuffer(mjFB_OFFSCREEN, con);
+  mjrRect r = mjr_maxViewport(con);
+  mjr_rectangle(r, 0.3f, 0.6f, 0.9f, 1);
+  mjr_text(mjFONT_BIG, "blit", con, 0.3f, 0.5f, 1, 0, 0);
+  for (int k = 0; k < 3; k++) {
+    mjrRect dst = {10 * k, 5 * k, W / (k + 1), H / (k + 1)};
+    mjr_blitBuffer(r, dst, k != 1, k != 0, con);
+  }
+  mjr_setBuffer(mjFB_WINDOW, con);
+  readback("blitbuffer", full, con);
+  // auxiliary buffers drawn into and blitted out
+  for (int a = 0; a < 2; a++) {
+    mjr_addAux(a, 200 + 40 * a, 120, a ? 4 : 0, con);
+    mjr_setAux(a, con);
+    mjrRect ar = {0, 0, 200 + 40 * a, 120};
+    mjr_rectangle(ar, 0.2f * a, 0.5f, 0.3f, 1);
+    mjr_text(mjFONT_SHADOW, a ? "aux one" : "aux zero", con, 0.1f, 0.5f, 1, 1, 1);
+    mjr_restoreBuffer(con);
+  }
+  mjr_setBuffer(mjFB_WINDOW, con);
+  mjr_rectangle(full, 0, 0, 0, 1);
+  mjrRect a0 = {0, 0, 200, 120}, a1 = {20, 10, 200, 100};
+  mjr_blitAux(0, a0, 5, 7, con);
+  mjr_blitAux(1, a1, 100, 120, con);
+  readback("aux", full, con);
+}
+
 static void model(const char* file) {
   char err[1000] = "";
   mjModel* m = mj_loadXML(file, NULL, err, sizeof err);
@@ -223,6 +286,7 @@ static void model(const char* file) {
     if (r.height > H) r.height = H;
     for (int k = 0; configure(m, d, k, &opt, &cam, &pert, &scn, name); k++) {
       if (!buf && k > 0) break;  // the window buffer: the default case only
+      if (quick && k != 0 && k != mjNRNDFLAG + 1 && k != mjNRNDFLAG + 2) continue;
       mjv_updateScene(m, d, &opt, &pert, &cam, mjCAT_ALL, &scn);
       nan_labels(&scn);
       mjr_render(r, &scn, &con);
@@ -238,7 +302,10 @@ static void model(const char* file) {
       readback("off-subviewport", r, &con);
     }
   }
-  if (nmodel == 0) overlays(&con, full);
+  if (nmodel == 0 && twod) {
+    overlays(&con, full);
+    buffers(&con, full);
+  }
   mjv_freeScene(&scn);
   mjr_freeContext(&con);
   mj_deleteData(d);
@@ -251,6 +318,16 @@ int main(int argc, char** argv) {
     fprintf(stderr, "no OSMesa context\n");
     return 2;
   }
-  for (int a = 1; a < argc; a++, nmodel++) model(argv[a]);
+  int a = 1;
+  for (; a < argc; a++) {
+    if (!strcmp(argv[a], "quick")) {
+      quick = 1;
+    } else if (!strcmp(argv[a], "2d")) {
+      twod = 1;
+    } else {
+      break;
+    }
+  }
+  for (; a < argc; a++, nmodel++) model(argv[a]);
   return 0;
 }

@@ -95,11 +95,17 @@ fn context_matches_reference() {
 
 /// Runs `prog` of both libraries over the models in chunks; returns every differing line with
 /// its model, and the reference's output.
-fn differences(name: &str, files: &[String], chunk: usize) -> (Vec<String>, String) {
+fn differences(
+    name: &str,
+    files: &[String],
+    chunk: usize,
+    flags: impl Fn(usize) -> Vec<&'static str> + Sync,
+) -> (Vec<String>, String) {
     let (r, o) = (compile(name, Lib::Ref), compile(name, Lib::Ours));
     let chunks: Vec<&[String]> = files.chunks(chunk).collect();
-    let results = par_map(&chunks, |_, chunk| {
-        let args: Vec<&str> = chunk.iter().map(String::as_str).collect();
+    let results = par_map(&chunks, |i, chunk| {
+        let mut args = flags(i);
+        args.extend(chunk.iter().map(String::as_str));
         let reference = run(&r, &args, &[], 1200);
         let ours = run(&o, &args, &[], 1200);
         (
@@ -136,13 +142,23 @@ fn differences(name: &str, files: &[String], chunk: usize) -> (Vec<String>, Stri
 #[test]
 fn scene_matches_reference() {
     require_osmesa();
-    let mut files = models();
-    files.extend(
-        main_corpus_files()
-            .iter()
-            .map(|p| p.to_string_lossy().into_owned()),
-    );
-    let (differ, all) = differences("render_scene", &files, 6);
+    // every case on the models of the list, three on the rest of the main corpus
+    let files = models();
+    let (mut differ, mut all) = differences("render_scene", &files, 6, |i| {
+        if i == 0 {
+            vec!["2d"]
+        } else {
+            vec![]
+        }
+    });
+    let corpus: Vec<String> = main_corpus_files()
+        .iter()
+        .map(|p| p.to_string_lossy().into_owned())
+        .collect();
+    let (d, a) = differences("render_scene", &corpus, 8, |_| vec!["quick"]);
+    differ.extend(d);
+    all.push_str(&a);
+    let nmodels = files.len() + corpus.len();
     let frames = all.lines().filter(|l| l.contains(" rgb ")).count();
     let lit = all
         .lines()
@@ -151,8 +167,7 @@ fn scene_matches_reference() {
     report(
         "render-scene",
         &format!(
-            "mjr_render and 2D drawing: {} models, {frames} frames (color and depth), {} differ\n",
-            files.len(),
+            "mjr_render and 2D drawing: {nmodels} models, {frames} frames (color and depth), {} differ\n",
             differ.len()
         ),
     );
