@@ -182,3 +182,96 @@ fn scene_matches_reference() {
         "{frames} frames, {lit} lit"
     );
 }
+
+/// examples/render_headless.c with no display, through EGL (surfaceless) and through OSMesa,
+/// built against each library: the same PNG bytes all four ways.
+#[test]
+fn headless_example_matches_reference() {
+    require_osmesa();
+    assert!(
+        std::path::Path::new("/usr/include/EGL/egl.h").exists(),
+        "EGL headers missing: install libegl-dev (capi-tests/run-all does it)"
+    );
+    let dir = work_dir("render");
+    let build = |lib: Lib, gl: &str| {
+        let out = dir.join(format!("render_headless-{gl}-{}", lib.name()));
+        let (inc, libdir) = match lib {
+            Lib::Ref => (
+                "/usr/include".to_string(),
+                "/usr/lib/x86_64-linux-gnu".to_string(),
+            ),
+            _ => (
+                root().join("include").to_string_lossy().into_owned(),
+                lib_dir().to_string_lossy().into_owned(),
+            ),
+        };
+        let mut cmd = std::process::Command::new("gcc");
+        cmd.arg("-O1")
+            .arg(root().join("examples/render_headless.c"))
+            .args(["-I", &inc, "-L", &libdir, "-lmujoco"]);
+        if gl == "osmesa" {
+            cmd.args(["-DOSMESA", "-lOSMesa"]);
+        } else {
+            cmd.arg("-lEGL");
+        }
+        let status = cmd
+            .args(["-lm", &format!("-Wl,-rpath,{libdir}"), "-o"])
+            .arg(&out)
+            .status()
+            .unwrap();
+        assert!(
+            status.success(),
+            "render_headless.c ({gl}) does not compile"
+        );
+        out
+    };
+    let mut models = vec![model("arm3.xml")];
+    models.extend(
+        corpus_dirs()
+            .iter()
+            .map(|d| d.join("mujoco-2.2.2/model/mug/mug.xml"))
+            .filter(|p| p.exists())
+            .map(|p| p.to_string_lossy().into_owned())
+            .take(1),
+    );
+    let mut images = 0;
+    for (i, m) in models.iter().enumerate() {
+        let mut pngs = Vec::new();
+        for gl in ["egl", "osmesa"] {
+            for lib in [Lib::Ref, Lib::Ours] {
+                let png = dir.join(format!("headless-{i}-{gl}-{}.png", lib.name()));
+                let _ = std::fs::remove_file(&png);
+                let prog = build(lib, gl);
+                let o = run(
+                    &prog,
+                    &[m, &png.to_string_lossy(), "100"],
+                    &[("DISPLAY", "")],
+                    300,
+                );
+                assert!(
+                    o.status.success(),
+                    "render_headless ({gl}, {lib:?}) on {m}: {}{}",
+                    text(&o.stdout),
+                    text(&o.stderr)
+                );
+                pngs.push((format!("{gl} {lib:?}"), std::fs::read(&png).unwrap()));
+            }
+        }
+        for (what, bytes) in &pngs[1..] {
+            assert!(
+                bytes == &pngs[0].1,
+                "{m}: the PNG of {what} differs from {}",
+                pngs[0].0
+            );
+        }
+        assert!(pngs[0].1.len() > 640 * 480 * 3, "{m}: PNG too small");
+        images += pngs.len();
+    }
+    report(
+        "render-headless",
+        &format!(
+            "examples/render_headless.c: {} models, {images} PNGs (EGL and OSMesa, ours and 2.2.2) byte-identical\n",
+            models.len()
+        ),
+    );
+}
