@@ -7,65 +7,8 @@ mod common;
 
 use common::*;
 use std::path::{Path, PathBuf};
-use std::process::{Child, Command, Stdio};
 
 const RECORD: &str = "/usr/bin/mujoco-record";
-
-/// An X server on a free display, stopped when dropped.
-pub struct Xvfb {
-    child: Child,
-    pub display: String,
-}
-
-impl Xvfb {
-    pub fn start() -> Xvfb {
-        assert!(
-            Command::new("sh")
-                .args(["-c", "command -v Xvfb"])
-                .stdout(Stdio::null())
-                .status()
-                .unwrap()
-                .success(),
-            "Xvfb missing: install xvfb (capi-tests/run-all does it)"
-        );
-        for n in 0..50 {
-            let num = 150 + (std::process::id() as usize + n) % 400;
-            let socket = format!("/tmp/.X11-unix/X{num}");
-            if Path::new(&socket).exists() || Path::new(&format!("/tmp/.X{num}-lock")).exists() {
-                continue;
-            }
-            let mut child = Command::new("Xvfb")
-                .arg(format!(":{num}"))
-                .args(["-screen", "0", "1280x1024x24", "-nolisten", "tcp"])
-                .stdout(Stdio::null())
-                .stderr(Stdio::null())
-                .spawn()
-                .expect("cannot start Xvfb");
-            for _ in 0..100 {
-                if Path::new(&socket).exists() {
-                    return Xvfb {
-                        child,
-                        display: format!(":{num}"),
-                    };
-                }
-                if let Ok(Some(_)) = child.try_wait() {
-                    break;
-                }
-                std::thread::sleep(std::time::Duration::from_millis(50));
-            }
-            let _ = child.kill();
-            let _ = child.wait();
-        }
-        panic!("could not start Xvfb on a free display");
-    }
-}
-
-impl Drop for Xvfb {
-    fn drop(&mut self) {
-        let _ = self.child.kill();
-        let _ = self.child.wait();
-    }
-}
 
 fn corpus_model(rel: &str) -> Option<PathBuf> {
     corpus_dirs()

@@ -4,7 +4,7 @@
 #![allow(dead_code)]
 
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output, Stdio};
+use std::process::{Child, Command, Output, Stdio};
 
 pub const REF_INCLUDE: &str = "/usr/include/mujoco/mujoco.h";
 pub const REF_LIB: &str = "/usr/lib/x86_64-linux-gnu/libmujoco.so.2.2.2";
@@ -423,4 +423,65 @@ pub fn loaders() -> &'static Loaders {
             seeds,
         }
     })
+}
+
+/// An X server on a free display, stopped when dropped.
+pub struct Xvfb {
+    child: Child,
+    pub display: String,
+}
+
+impl Xvfb {
+    /// Starts Xvfb (1280x1024, 24 bits) on a display no other server uses.
+    pub fn start() -> Xvfb {
+        // one start at a time in this process, each on a display of its own
+        static NEXT: std::sync::Mutex<usize> = std::sync::Mutex::new(0);
+        let mut next = NEXT.lock().unwrap_or_else(|e| e.into_inner());
+        assert!(
+            Command::new("sh")
+                .args(["-c", "command -v Xvfb"])
+                .stdout(Stdio::null())
+                .status()
+                .unwrap()
+                .success(),
+            "Xvfb missing: install xvfb (capi-tests/run-all does it)"
+        );
+        for _ in 0..50 {
+            let num = 150 + (std::process::id() as usize + *next) % 400;
+            *next += 1;
+            let socket = format!("/tmp/.X11-unix/X{num}");
+            if Path::new(&socket).exists() || Path::new(&format!("/tmp/.X{num}-lock")).exists() {
+                continue;
+            }
+            let mut child = Command::new("Xvfb")
+                .arg(format!(":{num}"))
+                .args(["-screen", "0", "1280x1024x24", "-nolisten", "tcp"])
+                .stdout(Stdio::null())
+                .stderr(Stdio::null())
+                .spawn()
+                .expect("cannot start Xvfb");
+            for _ in 0..100 {
+                if Path::new(&socket).exists() {
+                    return Xvfb {
+                        child,
+                        display: format!(":{num}"),
+                    };
+                }
+                if let Ok(Some(_)) = child.try_wait() {
+                    break;
+                }
+                std::thread::sleep(std::time::Duration::from_millis(50));
+            }
+            let _ = child.kill();
+            let _ = child.wait();
+        }
+        panic!("could not start Xvfb on a free display");
+    }
+}
+
+impl Drop for Xvfb {
+    fn drop(&mut self) {
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+    }
 }
