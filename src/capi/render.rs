@@ -74,7 +74,8 @@ pub unsafe extern "C" fn mjr_makeContext(
     let Some(con) = context_mut("mjr_makeContext", con) else {
         return;
     };
-    guard("mjr_makeContext", (), || {
+    // GL is loaded inside; a function the implementation lacks is reported as with_gl does
+    with_gl("mjr_makeContext", (), |_| {
         let m = m.as_ref().map(|m| Model::new(m));
         context::make_context(m.as_ref(), con, fontscale, (800, 600))
     })
