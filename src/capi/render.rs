@@ -7,9 +7,38 @@ use crate::render::gl::Gl;
 use crate::render::{context, figure, framebuffer, scene, text};
 use std::os::raw::{c_char, c_int, c_uchar};
 
-/// Runs `f` with the loaded GL under `guard`.
-fn with_gl<R>(name: &str, fallback: R, f: impl FnOnce(&'static Gl) -> Result<R, EngineError>) -> R {
-    guard(name, fallback, || f(context::current(name)?))
+/// Runs `f` with the loaded GL (or none) as `guard` does: errors and panics are reported
+/// through mju_error. Where `f` calls a GL function that is not loaded (2.2.2 calls through a
+/// NULL pointer and crashes), the error says so.
+pub(super) fn with_gl<R>(
+    name: &str,
+    fallback: R,
+    f: impl FnOnce(&'static Gl) -> Result<R, EngineError>,
+) -> R {
+    let gl = crate::render::gl::loaded_or_absent();
+    let explain = |p: &(dyn std::any::Any + Send)| {
+        crate::render::gl::is_missing(p).map(|function| {
+            if crate::render::gl::loaded().is_none() {
+                format!(
+                    "{name}: OpenGL not initialized; call mjr_makeContext with a current \
+                     OpenGL context"
+                )
+            } else {
+                format!("{name}: OpenGL function {function} not available")
+            }
+        })
+    };
+    match crate::runtime::guard::catch_explained(name, || f(gl), explain) {
+        Ok(Ok(r)) => r,
+        Ok(Err(e)) => {
+            errmem::error(&e.0);
+            fallback
+        }
+        Err(msg) => {
+            errmem::error(&msg);
+            fallback
+        }
+    }
 }
 
 /// A NULL context is reported (2.2.2 would crash).
@@ -45,7 +74,8 @@ pub unsafe extern "C" fn mjr_makeContext(
     let Some(con) = context_mut("mjr_makeContext", con) else {
         return;
     };
-    guard("mjr_makeContext", (), || {
+    // GL is loaded inside; a function the implementation lacks is reported as with_gl does
+    with_gl("mjr_makeContext", (), |_| {
         let m = m.as_ref().map(|m| Model::new(m));
         context::make_context(m.as_ref(), con, fontscale, (800, 600))
     })
@@ -275,12 +305,14 @@ unsafe fn bytes<'a>(s: *const c_char) -> &'a [u8] {
 
 #[no_mangle]
 pub unsafe extern "C" fn mjr_render(viewport: mjrRect, scn: *mut mjvScene, con: *const mjrContext) {
-    let (Some(scn), Some(con)) = (scn.as_mut(), context_ref("mjr_render", con)) else {
+    // a NULL context is reported where 2.2.2 would first read it (it returns before that for
+    // an empty viewport or a scene without cameras)
+    let Some(scn) = scn.as_mut() else {
         return errmem::error("mjr_render: NULL scene");
     };
     with_gl("mjr_render", (), |gl| {
         let mut view = crate::abi::view::Scene::new(scn);
-        scene::render(gl, viewport, &mut view, con)
+        scene::render(gl, viewport, &mut view, con.as_ref())
     })
 }
 
@@ -367,9 +399,24 @@ pub unsafe extern "C" fn mjr_figure(
     let Some(con) = context_ref("mjr_figure", con) else {
         return;
     };
+    // 2.2.2 returns for an empty viewport before reading the figure
+    if viewport.width <= 0 || viewport.height <= 0 {
+        return;
+    }
     let Some(fig) = fig.as_mut() else {
         return errmem::error("mjr_figure: NULL figure");
     };
+    // 2.2.2 reads a line's points on into the next lines' data, and past the figure (where
+    // it may crash) when there are more than that
+    for (n, &pnt) in fig.linepnt.iter().enumerate() {
+        let room = (mjMAXLINE - n) * mjMAXLINEPNT;
+        if pnt > 0 && pnt as usize > room {
+            return errmem::error(&format!(
+                "mjr_figure: linepnt[{n}] is {pnt}, more points than the figure holds from \
+                 line {n} on ({room})"
+            ));
+        }
+    }
     with_gl("mjr_figure", (), |gl| {
         figure::figure(gl, viewport, fig, con);
         Ok(())

@@ -1,6 +1,7 @@
 //! C entry points of the UI framework (mjui_): argument checks, then `crate::ui`.
 
 use super::guard;
+use super::render::with_gl;
 use crate::abi::*;
 use crate::ui;
 use std::os::raw::c_int;
@@ -123,15 +124,6 @@ impl ui::host::Host for CHost {
         ui.predicate
             .map_or(1, |f| unsafe { f(category, ui.userdata) })
     }
-}
-
-/// Runs `f` with the loaded GL under `guard`.
-fn with_gl<R>(
-    name: &str,
-    fallback: R,
-    f: impl FnOnce(&'static crate::render::gl::Gl) -> Result<R, crate::engine::EngineError>,
-) -> R {
-    guard(name, fallback, || f(crate::render::context::current(name)?))
 }
 
 #[no_mangle]

@@ -16,15 +16,6 @@ fn err(msg: impl Into<String>) -> EngineError {
     EngineError(msg.into())
 }
 
-/// The loaded GL functions, for a call that needs a context made before.
-pub fn current(name: &str) -> Result<&'static Gl, EngineError> {
-    gl::loaded().ok_or_else(|| {
-        err(format!(
-            "{name}: no OpenGL context (call mjr_makeContext first)"
-        ))
-    })
-}
-
 /// Cleared context (mjr_defaultContext).
 pub fn default_context() -> mjrContext {
     // SAFETY: mjrContext is plain data; all zeros is its cleared state.
@@ -585,14 +576,43 @@ pub fn upload_texture(gl: &Gl, m: &Model, con: &mjrContext, id: i32) -> Result<(
     }
     let i = id as usize;
     let (w, h) = (m.tex_width()[i], m.tex_height()[i]);
-    let rgb = &m.tex_rgb()[m.tex_adr()[i] as usize..];
+    let cube = m.tex_type()[i] != mjtTexture_::mjTEXTURE_2D as i32;
+    let all = m.tex_rgb();
+    let adr = m.tex_adr()[i];
+    let rgb = all.get(adr.max(0) as usize..).unwrap_or(&[]);
+    // bytes glTexImage2D reads: 2.2.2 hands GL the model's data whatever the texture's size
+    let side = |n: i32| n.max(0) as usize;
+    let need = match (cube, w == h) {
+        (false, _) => 3 * side(w) * side(h),
+        (true, true) => 3 * side(w) * side(w),
+        (true, false) => 6 * 3 * side(w) * side(w),
+    };
+    let data = if adr >= 0 && need <= rgb.len() {
+        Some(rgb)
+    } else {
+        // GL reads nothing of an image it rejects for its size, as it does past its limit;
+        // else 2.2.2 would read past the model's texture data
+        let max = gl.get_integer(if cube {
+            GL_MAX_CUBE_MAP_TEXTURE_SIZE
+        } else {
+            GL_MAX_TEXTURE_SIZE
+        });
+        let rejected = w < 0 || w > max || (!cube && (h < 0 || h > max));
+        if !rejected {
+            return Err(err(format!(
+                "mjr_uploadTexture: texture {id} of {w} x {h} is larger than its data in the \
+                 model"
+            )));
+        }
+        None
+    };
     let planes: [(u32, [f32; 4]); 3] = [
         (GL_S, [1.0, 0.0, 0.0, 0.0]),
         (GL_T, [0.0, 1.0, 0.0, 0.0]),
         (GL_R, [0.0, 0.0, 1.0, 0.0]),
     ];
     gl.glActiveTexture(GL_TEXTURE0);
-    let (target, wrap, ncoord) = if m.tex_type()[i] == mjtTexture_::mjTEXTURE_2D as i32 {
+    let (target, wrap, ncoord) = if !cube {
         (GL_TEXTURE_2D, GL_REPEAT, 2)
     } else {
         (GL_TEXTURE_CUBE_MAP, GL_CLAMP_TO_EDGE, 3)
@@ -616,21 +636,13 @@ pub fn upload_texture(gl: &Gl, m: &Model, con: &mjrContext, id: i32) -> Result<(
         gl.tex_genfv(*coord, GL_OBJECT_PLANE, plane);
     }
     if target == GL_TEXTURE_2D {
-        gl.tex_image_2d(
-            target,
-            GL_RGB as i32,
-            w,
-            h,
-            GL_RGB,
-            GL_UNSIGNED_BYTE,
-            Some(rgb),
-        );
+        gl.tex_image_2d(target, GL_RGB as i32, w, h, GL_RGB, GL_UNSIGNED_BYTE, data);
     } else {
-        let face = 3 * (w * w) as usize;
+        let face = 3 * side(w) * side(w);
         for f in 0..6 {
-            let data = if w == h { rgb } else { &rgb[f * face..] };
+            let data = data.map(|d| if w == h { d } else { &d[f * face..] });
             let t = GL_TEXTURE_CUBE_MAP_POSITIVE_X + f as u32;
-            gl.tex_image_2d(t, GL_RGB as i32, w, w, GL_RGB, GL_UNSIGNED_BYTE, Some(data));
+            gl.tex_image_2d(t, GL_RGB as i32, w, w, GL_RGB, GL_UNSIGNED_BYTE, data);
         }
     }
     gl.glGenerateMipmap(target);

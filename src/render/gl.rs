@@ -26,6 +26,14 @@ macro_rules! gl_api {
         }
 
         impl Gl {
+            /// No function at all: what every call meets before OpenGL is loaded.
+            const ABSENT: Gl = Gl {
+                $($s: None,)*
+                $($r: None,)*
+                version: (0, 0),
+                extensions: String::new(),
+            };
+
             fn load(get: impl Fn(&CStr) -> *const c_void) -> Gl {
                 Gl {
                     // SAFETY: a GL function of this name has this C signature.
@@ -41,7 +49,7 @@ macro_rules! gl_api {
                 /// current context).
                 #[inline]
                 pub fn $s(&self, $($sa: $st),*) $(-> $sr)? {
-                    let f = self.$s.expect(concat!(stringify!($s), " is not available"));
+                    let Some(f) = self.$s else { missing(stringify!($s)) };
                     // SAFETY: scalar arguments only.
                     unsafe { f($($sa),*) }
                 }
@@ -50,12 +58,28 @@ macro_rules! gl_api {
                 /// Calls the GL function of this name; the caller vouches for its pointers.
                 #[inline]
                 pub unsafe fn $r(&self, $($ra: $rt),*) $(-> $rr)? {
-                    let f = self.$r.expect(concat!(stringify!($r), " is not available"));
+                    let Some(f) = self.$r else { missing(stringify!($r)) };
                     f($($ra),*)
                 }
             )*
         }
     };
+}
+
+/// The panic of a call to a GL function that is not loaded (caught at the C boundary, which
+/// reports it through mju_error; see `is_missing`).
+#[cold]
+#[inline(never)]
+fn missing(name: &'static str) -> ! {
+    std::panic::panic_any(Missing(name))
+}
+
+/// Panic payload: the GL function that was called but is not loaded.
+pub struct Missing(pub &'static str);
+
+/// The function named by a panic payload of a GL function that is not loaded.
+pub fn is_missing(payload: &(dyn std::any::Any + Send)) -> Option<&'static str> {
+    payload.downcast_ref::<Missing>().map(|m| m.0)
 }
 
 fn cname(s: &str) -> std::ffi::CString {
@@ -305,6 +329,13 @@ impl Gl {
 }
 
 static GL: OnceLock<Option<Gl>> = OnceLock::new();
+static ABSENT: Gl = Gl::ABSENT;
+
+/// The loaded functions, or none at all before OpenGL was loaded: every GL call then panics
+/// with `Missing` (where 2.2.2 calls through a NULL function pointer).
+pub fn loaded_or_absent() -> &'static Gl {
+    loaded().unwrap_or(&ABSENT)
+}
 
 /// The functions loaded by an earlier `load`, if it found a current context.
 pub fn loaded() -> Option<&'static Gl> {
@@ -592,8 +623,10 @@ pub mod consts {
     pub const GL_LINEAR_MIPMAP_LINEAR: u32 = 0x2703;
     pub const GL_LINES: u32 = 0x0001;
     pub const GL_LINE_STRIP: u32 = 0x0003;
+    pub const GL_MAX_CUBE_MAP_TEXTURE_SIZE: u32 = 0x851C;
     pub const GL_MAX_RENDERBUFFER_SIZE: u32 = 0x84E8;
     pub const GL_MAX_SAMPLES: u32 = 0x8D57;
+    pub const GL_MAX_TEXTURE_SIZE: u32 = 0x0D33;
     pub const GL_MODELVIEW: u32 = 0x1700;
     pub const GL_MODELVIEW_MATRIX: u32 = 0x0BA6;
     pub const GL_MODULATE: u32 = 0x2100;

@@ -492,7 +492,7 @@ pub fn render(
     gl: &Gl,
     mut viewport: mjrRect,
     scn: &mut Scene,
-    con: &mjrContext,
+    con: Option<&mjrContext>,
 ) -> Result<(), EngineError> {
     if viewport.width <= 0 || viewport.height <= 0 {
         return Ok(());
@@ -509,6 +509,10 @@ pub fn render(
         }
         return Ok(());
     }
+    // 2.2.2 reads a NULL context from here on (and crashes)
+    let Some(con) = con else {
+        return Err(EngineError("mjr_render: NULL context".into()));
+    };
     for i in 0..raw.nskin.max(0) as usize {
         let (adr, n) = (
             3 * scn.skinvertadr[i] as usize,

@@ -10,11 +10,24 @@ thread_local! {
 
 /// Runs `f`; a panic comes back as Err("`name`: internal error (why)").
 pub fn catch<R>(name: &str, f: impl FnOnce() -> R) -> Result<R, String> {
+    catch_explained(name, f, |_| None)
+}
+
+/// As `catch`, where `explain` may give the message of a panic from its payload (else the
+/// internal error message).
+pub fn catch_explained<R>(
+    name: &str,
+    f: impl FnOnce() -> R,
+    explain: impl FnOnce(&(dyn std::any::Any + Send)) -> Option<String>,
+) -> Result<R, String> {
     quiet_panics();
     GUARDED.with(|g| g.set(g.get() + 1));
     let result = std::panic::catch_unwind(std::panic::AssertUnwindSafe(f));
     GUARDED.with(|g| g.set(g.get() - 1));
     result.map_err(|p| {
+        if let Some(msg) = explain(p.as_ref()) {
+            return msg;
+        }
         let why = p
             .downcast_ref::<&str>()
             .map(|s| s.to_string())
