@@ -77,7 +77,7 @@ fn play(program: &str, lib: Lib, script: &[(&str, Vec<&str>)]) -> Vec<(String, u
     }
     let mut child = cmd.spawn().unwrap();
     let mut window = String::new();
-    for _ in 0..100 {
+    for _ in 0..300 {
         window = xdotool(&x.display, &["search", "--onlyvisible", "--name", "."])
             .lines()
             .next()
@@ -88,7 +88,15 @@ fn play(program: &str, lib: Lib, script: &[(&str, Vec<&str>)]) -> Vec<(String, u
         }
         std::thread::sleep(Duration::from_millis(100));
     }
-    assert!(!window.is_empty(), "{program} on {lib:?}: no window");
+    if window.is_empty() {
+        let _ = child.kill();
+        let o = child.wait_with_output().unwrap();
+        panic!(
+            "{program} on {lib:?}: no window in 30 s ({}): {}",
+            o.status,
+            text(&o.stderr)
+        );
+    }
     std::thread::sleep(Duration::from_secs(3));
     let mut out = Vec::new();
     for (name, args) in script {
@@ -126,6 +134,9 @@ fn play(program: &str, lib: Lib, script: &[(&str, Vec<&str>)]) -> Vec<(String, u
 }
 
 fn compare(name: &str, program: &str, script: &[(&str, Vec<&str>)]) {
+    // one program at a time: the captures wait on the window, not on a loaded machine
+    static ONE: std::sync::Mutex<()> = std::sync::Mutex::new(());
+    let _one = ONE.lock().unwrap_or_else(|e| e.into_inner());
     require_tools();
     let reference = play(program, Lib::Ref, script);
     let ours = play(program, Lib::Ours, script);
