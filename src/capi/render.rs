@@ -50,6 +50,11 @@ unsafe fn context_ref<'a>(name: &str, con: *const mjrContext) -> Option<&'a mjrC
     c
 }
 
+/// A viewport with nothing to draw (2.2.2 returns before reading the context).
+fn empty(viewport: &mjrRect) -> bool {
+    viewport.width <= 0 || viewport.height <= 0
+}
+
 unsafe fn context_mut<'a>(name: &str, con: *mut mjrContext) -> Option<&'a mut mjrContext> {
     let c = con.as_mut();
     if c.is_none() {
@@ -177,6 +182,10 @@ pub unsafe extern "C" fn mjr_readPixels(
     viewport: mjrRect,
     con: *const mjrContext,
 ) {
+    // 2.2.2 returns before reading the context when there is nothing to read
+    if rgb.is_null() && depth.is_null() {
+        return;
+    }
     let Some(con) = context_ref("mjr_readPixels", con) else {
         return;
     };
@@ -347,6 +356,9 @@ pub unsafe extern "C" fn mjr_overlay(
     overlay2: *const c_char,
     con: *const mjrContext,
 ) {
+    if empty(&viewport) {
+        return;
+    }
     let Some(con) = context_ref("mjr_overlay", con) else {
         return;
     };
@@ -380,6 +392,9 @@ pub unsafe extern "C" fn mjr_label(
     bt: f32,
     con: *const mjrContext,
 ) {
+    if empty(&viewport) {
+        return;
+    }
     let Some(con) = context_ref("mjr_label", con) else {
         return;
     };
