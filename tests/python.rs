@@ -1,7 +1,8 @@
 //! MuJoCo's Python package on rujoco (python/): the same Python programs on the bindings built
-//! against rujoco and against Debian's 2.2.2 print the same numbers. The two venvs live under
-//! target/python and are rebuilt only when the headers or the build backend change; ours gets
-//! the current libmujoco.so copied in at every run.
+//! against rujoco and against Debian's 2.2.2 print the same numbers, and the same digests of the
+//! frames they render headless through Mesa's llvmpipe (MUJOCO_GL=egl and MUJOCO_GL=osmesa).
+//! The two venvs live under target/python and are rebuilt only when the headers or the build
+//! backend change; ours gets the current libmujoco.so copied in at every run.
 
 mod common;
 
@@ -215,11 +216,21 @@ fn same_output(name: &str, gl: Gl, script: &str, args: &[&str], seconds: u32) ->
         .filter(|(x, y)| x != y)
         .map(|(x, y)| format!("ours: {x}\n ref: {y}"))
         .collect();
-    let pixels = b.iter().filter(|l| l.contains("pixels")).count();
+    // frames rendered: the "N frames" the scripts print
+    let frames: usize = b
+        .iter()
+        .flat_map(|l| {
+            let w: Vec<&str> = l.split_whitespace().collect();
+            (1..w.len())
+                .filter(|&i| w[i].starts_with("frames"))
+                .filter_map(|i| w[i - 1].parse::<usize>().ok())
+                .collect::<Vec<_>>()
+        })
+        .sum();
     report(
         &format!("python-{name}"),
         &format!(
-            "python {name} (MUJOCO_GL={}): {} lines ({pixels} with pixel digests), {} identical, \
+            "python {name} (MUJOCO_GL={}): {} lines ({frames} frames rendered), {} identical, \
              {} differ, {:.0} s for both sides\n",
             gl.name(),
             b.len(),

@@ -75,7 +75,7 @@ def main():
               f"{mean[0]:6.2f} {mean[1]:6.2f} {mean[2]:6.2f}  "
               f"{depth.min():.6f}..{depth.max():.6f}  ngeom {scene.ngeom}")
     size = write_png(out, image)
-    print(f"wrote {os.path.basename(out)}: {WIDTH}x{HEIGHT}, {size} bytes")
+    print(f"4 frames rendered; wrote {os.path.basename(out)}: {WIDTH}x{HEIGHT}, {size} bytes")
     con.free()
     gl.free()
 

@@ -21,20 +21,23 @@ without = args[1:]  # domain/task names left out
 HEIGHT, WIDTH = 48, 64
 
 
-def render(phys, pixels, final):
+def render(phys, pixels, frames, final):
     """RGB from each camera (and depth, segmentation when final) into the pixel digest."""
     cameras = [-1] + ([0] if phys.model.ncam else [])
     last = None
     for cam in cameras:
         last = phys.render(HEIGHT, WIDTH, camera_id=cam)
         assert last.shape == (HEIGHT, WIDTH, 3) and last.dtype == np.uint8
+        assert last.min() != last.max(), "a blank frame"
         pixels.update(last.tobytes())
+    frames[0] += len(cameras)
     if final:
         depth = phys.render(HEIGHT, WIDTH, camera_id=cameras[-1], depth=True)
         seg = phys.render(HEIGHT, WIDTH, camera_id=cameras[-1], segmentation=True)
         pixels.update(np.ascontiguousarray(depth, dtype=np.float32).tobytes())
         pixels.update(np.ascontiguousarray(seg, dtype=np.int32).tobytes())
-        return (f"frames {len(cameras) * 3 + 2} rgb sum {int(last.sum())} "
+        frames[0] += 2
+        return (f"{frames[0]} frames, rgb sum {int(last.sum())} "
                 f"depth min {float(depth.min()).hex()} max {float(depth.max()).hex()} "
                 f"segments {len(np.unique(seg[..., 0]))}")
     return None
@@ -46,10 +49,10 @@ for domain, task in suite.ALL_TASKS:
     env = suite.load(domain, task, task_kwargs={"random": 7})
     spec = env.action_spec()
     rng = np.random.RandomState(0)
-    digest, pixels = hashlib.sha256(), hashlib.sha256()
+    digest, pixels, frames = hashlib.sha256(), hashlib.sha256(), [0]
     ts = env.reset()
     if RENDER:
-        render(env.physics, pixels, False)
+        render(env.physics, pixels, frames, False)
     total, note, figures = 0.0, "", ""
     for step in range(STEPS):
         try:
@@ -62,10 +65,10 @@ for domain, task in suite.ALL_TASKS:
             digest.update(np.ascontiguousarray(ts.observation[k], dtype=np.float64).tobytes())
         digest.update(np.float64(ts.reward or 0.0).tobytes())
         if RENDER and step + 1 == STEPS // 2:
-            render(env.physics, pixels, False)
+            render(env.physics, pixels, frames, False)
     phys = env.physics
     if RENDER:
-        last = render(phys, pixels, True)
+        last = render(phys, pixels, frames, True)
         figures = f" pixels {pixels.hexdigest()[:32]} {last}"
     print(f"{domain}/{task}: return {total.hex()} time {phys.data.time.hex()} "
           f"qpos0 {float(phys.data.qpos[0]).hex() if phys.model.nq else '-'} "

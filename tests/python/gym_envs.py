@@ -36,6 +36,7 @@ def run(name, mode):
     def grab():
         nonlocal frames, frame
         frame = env.render()
+        assert frame.shape[:2] == (HEIGHT, WIDTH) and frame.min() != frame.max(), "a blank frame"
         pixels.update(np.ascontiguousarray(frame).tobytes())
         frames += 1
 
