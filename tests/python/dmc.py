@@ -3,8 +3,9 @@ actions. Prints, per task, a digest of every observation and reward and the last
 
 With --render (needs MUJOCO_GL=egl or osmesa), each task also renders through
 physics.render at reset, half way and at the end: RGB from the free camera (-1) and from camera
-0 where the model has one, and at the end a depth and a segmentation image; one line per task
-with a digest of all the pixel arrays and the figures of the last RGB frame."""
+0 where the model has one, and at the end a depth and a segmentation image (and, for height
+fields, RGB again after a second reset); one line per task with a digest of all the pixel arrays
+and the figures of the last RGB frame."""
 
 import hashlib
 import sys
@@ -69,6 +70,10 @@ for domain, task in suite.ALL_TASKS:
     phys = env.physics
     if RENDER:
         last = render(phys, pixels, frames, True)
+        if phys.model.nhfield:  # a new terrain goes up through mjr_uploadHField at reset
+            env.reset()
+            render(env.physics, pixels, frames, False)
+            last += f", after a second reset {frames[0]} frames"
         figures = f" pixels {pixels.hexdigest()[:32]} {last}"
     print(f"{domain}/{task}: return {total.hex()} time {phys.data.time.hex()} "
           f"qpos0 {float(phys.data.qpos[0]).hex() if phys.model.nq else '-'} "
