@@ -43,6 +43,8 @@ def negative_timestep_step():
 
 
 attempt("step with negative timestep", negative_timestep_step)
+attempt("missing GL context",
+        lambda: mujoco.MjrContext(m, mujoco.mjtFontScale.mjFONTSCALE_150))
 d.qpos[0] = np.nan
 mujoco.mj_step(m, d)
 print("nan qpos: warning count", d.warning[mujoco.mjtWarning.mjWARN_BADQPOS].number)
