@@ -487,6 +487,257 @@ fn rbound(g: &mjvGeom) -> f32 {
     }
 }
 
+/// What the passes of one view draw with.
+struct Draw<'a> {
+    gl: &'a Gl,
+    con: &'a mjrContext,
+    geoms: &'a [mjvGeom],
+    /// Transparent geoms, nearest first.
+    order: &'a [usize],
+    lights: &'a [mjvLight],
+    head: [f32; 3],
+    skins: Skins<'a>,
+    additive: bool,
+    wire: u32,
+}
+
+impl Draw<'_> {
+    fn geom(&self, g: &mjvGeom, mode: Mode) {
+        render_geom(self.gl, g, mode, &self.head, &self.skins, self.con);
+    }
+
+    /// Blending of transparent geoms: additive, or over what is drawn.
+    fn blend_transparent(&self) {
+        let dst = if self.additive {
+            GL_ONE
+        } else {
+            GL_ONE_MINUS_SRC_ALPHA
+        };
+        self.gl.glBlendFunc(GL_SRC_ALPHA, dst);
+    }
+}
+
+/// Reflections in every reflective plane or box facing the viewer, through the stencil buffer.
+fn reflections(pass: &Draw) {
+    let (gl, con, geoms, head, skins, wire) = (
+        pass.gl,
+        pass.con,
+        pass.geoms,
+        pass.head,
+        &pass.skins,
+        pass.wire,
+    );
+    for i in 0..geoms.len() {
+        if !is_reflective(&geoms[i]) {
+            continue;
+        }
+        let mut mirror = geoms[i];
+        if mirror.r#type == GEOM_BOX {
+            mirror.r#type = GEOM_PLANE;
+            for k in 0..3 {
+                mirror.pos[k] += mirror.size[2] * mirror.mat[3 * k + 2];
+            }
+        }
+        if is_behind(&head, &mirror.pos, &mirror.mat) {
+            continue;
+        }
+        gl.glDisable(GL_DEPTH_TEST);
+        gl.glColorMask(0, 0, 0, 0);
+        gl.glEnable(GL_STENCIL_TEST);
+        gl.glClear(GL_STENCIL_BUFFER_BIT);
+        gl.glStencilFunc(GL_ALWAYS, 1, 0xFF);
+        gl.glStencilOp(GL_REPLACE, GL_REPLACE, GL_REPLACE);
+        gl.glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+        render_geom(gl, &mirror, Mode::Normal, &head, skins, con);
+        gl.glPolygonMode(GL_FRONT_AND_BACK, wire);
+        gl.glEnable(GL_DEPTH_TEST);
+        gl.glColorMask(1, 1, 1, 1);
+        gl.glStencilFunc(GL_EQUAL, 1, 0xFF);
+        gl.glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+        gl.glEnable(GL_CLIP_PLANE0);
+        let (p, mm) = (&mirror.pos, &mirror.mat);
+        let d = p[0] * mm[2] + p[1] * mm[5] + p[2] * mm[8];
+        gl.clip_plane(
+            GL_CLIP_PLANE0,
+            &[-mm[2] as f64, -mm[5] as f64, -mm[8] as f64, d as f64],
+        );
+        gl.glFrontFace(GL_CW);
+        gl.glPushMatrix();
+        reflect(gl, &mirror.pos, &mirror.mat);
+        for (j, l) in pass.lights.iter().enumerate() {
+            adjust_light(gl, l, j);
+            gl.glEnable(GL_LIGHT0 + j as u32);
+        }
+        let r = mirror.reflectance;
+        for j in 0..geoms.len() {
+            if geoms[j].transparent == 0 && i != j {
+                render_reflection(gl, &geoms[j], r, &head, skins, con);
+            }
+        }
+        gl.glDepthMask(0);
+        gl.glEnable(GL_BLEND);
+        pass.blend_transparent();
+        for &j in pass.order.iter().filter(|&&j| j != i) {
+            render_reflection(gl, &geoms[j], r, &head, skins, con);
+        }
+        if !pass.additive {
+            for &j in pass.order.iter().rev().filter(|&&j| j != i) {
+                render_reflection(gl, &geoms[j], r, &head, skins, con);
+            }
+        }
+        gl.glDepthMask(1);
+        gl.glDisable(GL_BLEND);
+        for j in 0..pass.lights.len() {
+            gl.glDisable(GL_LIGHT0 + j as u32);
+        }
+        gl.glDisable(GL_STENCIL_TEST);
+        gl.glDisable(GL_CLIP_PLANE0);
+        gl.glPopMatrix();
+        gl.glFrontFace(GL_CCW);
+    }
+}
+
+/// Where the camera's view draws: its projection and view matrices, buffer and viewport.
+struct Target {
+    project: [f32; 16],
+    view: [f32; 16],
+    framebuffer: u32,
+    drawbuffer: u32,
+    viewport: mjrRect,
+}
+
+/// Shadows of every light that casts them: a depth map from the light, then the lit geoms
+/// again with the map as texture.
+fn shadows(pass: &Draw, cam: &mjvGLCamera, t: &Target) {
+    let (gl, con, geoms, head, skins) = (pass.gl, pass.con, pass.geoms, pass.head, &pass.skins);
+    let (cam_project, cam_view, viewport) = (t.project, t.view, t.viewport);
+    for (i, l) in pass.lights.iter().enumerate() {
+        if l.castshadow == 0 {
+            continue;
+        }
+        let up = ortho(&l.dir);
+        gl.glMatrixMode(GL_PROJECTION);
+        gl.glLoadIdentity();
+        let (near, far) = (cam.frustum_near, cam.frustum_far);
+        if l.directional != 0 {
+            let c = con.shadowClip as f64;
+            gl.glOrtho(-c, c, -c, c, near as f64, far as f64);
+        } else {
+            let fovy = 2.0 * l.cutoff * con.shadowScale;
+            let fovy = if (fovy as f64) < 160.0 { fovy } else { 160.0 };
+            perspective(gl, fovy, 1.0, near, far);
+        }
+        let light_project = gl.get_floats::<16>(GL_PROJECTION_MATRIX);
+        gl.glMatrixMode(GL_MODELVIEW);
+        gl.glLoadIdentity();
+        look_at(gl, &l.pos, &l.dir, &up);
+        let light_view = gl.get_floats::<16>(GL_MODELVIEW_MATRIX);
+        gl.glBindFramebuffer(GL_FRAMEBUFFER, con.shadowFBO);
+        gl.glDrawBuffer(GL_NONE);
+        gl.glClear(GL_DEPTH_BUFFER_BIT);
+        gl.glViewport(1, 1, con.shadowSize - 2, con.shadowSize - 2);
+        gl.glCullFace(GL_FRONT);
+        gl.glShadeModel(GL_FLAT);
+        gl.glDisable(GL_LIGHTING);
+        gl.glColorMask(0, 0, 0, 0);
+        for g in geoms.iter() {
+            render_geom(gl, g, Mode::ShadowCast, &head, skins, con);
+        }
+        gl.glBindFramebuffer(GL_FRAMEBUFFER, t.framebuffer);
+        gl.glDrawBuffer(t.drawbuffer);
+        gl.glViewport(
+            viewport.left,
+            viewport.bottom,
+            viewport.width,
+            viewport.height,
+        );
+        gl.glCullFace(GL_BACK);
+        gl.glShadeModel(GL_SMOOTH);
+        gl.glEnable(GL_LIGHTING);
+        gl.glColorMask(1, 1, 1, 1);
+        gl.glMatrixMode(GL_PROJECTION);
+        gl.load_matrixf(&cam_project);
+        gl.glMatrixMode(GL_MODELVIEW);
+        gl.load_matrixf(&cam_view);
+        let bias = [
+            0.5, 0.0, 0.0, 0.0, 0.0, 0.5, 0.0, 0.0, 0.0, 0.0, 0.5, 0.0, 0.5, 0.5, 0.5, 1.0,
+        ];
+        let texture = mul_mat44(&bias, &mul_mat44(&light_project, &light_view));
+        set_texture(gl, Tex::Shadow, true, con, None);
+        for (r, coord) in [GL_S, GL_T, GL_R, GL_Q].into_iter().enumerate() {
+            gl.tex_genfv(coord, GL_EYE_PLANE, &row4(&texture, r));
+        }
+        gl.glEnable(GL_ALPHA_TEST);
+        gl.glEnable(GL_BLEND);
+        gl.glBlendFunc(GL_ONE, GL_ONE);
+        gl.glEnable(GL_LIGHT0 + i as u32);
+        for g in geoms.iter().filter(|g| g.transparent == 0) {
+            render_geom(gl, g, Mode::ShadowMap, &head, skins, con);
+        }
+        gl.glDisable(GL_LIGHT0 + i as u32);
+        gl.glDisable(GL_BLEND);
+        gl.glDisable(GL_ALPHA_TEST);
+        set_texture(gl, Tex::Shadow, false, con, None);
+    }
+}
+
+/// The skybox around the viewer, with haze towards the horizon.
+fn skybox(pass: &Draw, cam: &mjvGLCamera, raw: &mjvScene) {
+    let (gl, con, geoms, head, wire) = (pass.gl, pass.con, pass.geoms, pass.head, pass.wire);
+    let flag = |f: mjtRndFlag_| raw.flags[f as usize] != 0;
+    gl.glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    let skybox = (0..con.ntexture.max(0) as usize)
+        .find(|&i| con.textureType[i] == mjtTexture_::mjTEXTURE_SKYBOX as i32);
+    if let Some(t) = skybox {
+        // SAFETY: mjvGeom is plain data; zeros with a texture id stand for the sky.
+        let mut sky: mjvGeom = unsafe { std::mem::zeroed() };
+        sky.texid = t as i32;
+        gl.glDisable(GL_LIGHTING);
+        gl.glDisable(GL_COLOR_MATERIAL);
+        gl.glCullFace(GL_FRONT);
+        gl.glPushMatrix();
+        gl.glTranslatef(head[0], head[1], head[2]);
+        let mut dst = cam.frustum_far * 0.70;
+        if raw.enabletransform != 0 {
+            dst /= raw.scale;
+        }
+        gl.glScalef(dst, dst, dst);
+        set_texture(gl, Tex::Skybox, true, con, Some(&sky));
+        gl.glColor4f(1.0, 1.0, 1.0, 1.0);
+        gl.glCallList(con.baseBuiltin + Builtin::Cylinder as u32);
+        set_texture(gl, Tex::Skybox, false, con, Some(&sky));
+        if flag(mjtRndFlag_::mjRND_HAZE) {
+            haze(gl, geoms, &head, dst, con);
+        }
+        gl.glPopMatrix();
+        gl.glEnable(GL_LIGHTING);
+        gl.glEnable(GL_COLOR_MATERIAL);
+        gl.glCullFace(GL_BACK);
+    }
+    gl.glPolygonMode(GL_FRONT_AND_BACK, wire);
+}
+
+/// The frame around the viewport.
+fn frame(gl: &Gl, raw: &mjvScene, viewport: &mjrRect) {
+    let fw = raw.framewidth;
+    if fw != 0 {
+        let c = raw.framergb;
+        gl.glClearColor(c[0], c[1], c[2], 0.0);
+        gl.glEnable(GL_SCISSOR_TEST);
+        let v = &viewport;
+        for (x, y, w, h) in [
+            (v.left, v.bottom, v.width, fw),
+            (v.left, v.bottom + v.height - fw, v.width, fw),
+            (v.left, v.bottom, fw, v.height),
+            (v.left + v.width - fw, v.bottom, fw, v.height),
+        ] {
+            gl.glScissor(x, y, w, h);
+            gl.glClear(GL_COLOR_BUFFER_BIT);
+        }
+        gl.glDisable(GL_SCISSOR_TEST);
+    }
+}
+
 /// Renders the scene into the viewport of the current buffer (mjr_render).
 pub fn render(
     gl: &Gl,
@@ -604,14 +855,25 @@ pub fn render(
     if stereo == side {
         viewport.width /= 2;
     }
-    let skins = Skins {
-        facenum: scn.skinfacenum,
-    };
     let order: Vec<usize> = scn.geomorder[..nt].iter().map(|&i| i as usize).collect();
     let wire = if flag(mjtRndFlag_::mjRND_WIREFRAME) {
         GL_LINE
     } else {
         GL_FILL
+    };
+    let geoms: &[mjvGeom] = geoms;
+    let draw = Draw {
+        gl,
+        con,
+        geoms,
+        order: &order,
+        lights: &raw.lights[..nlight],
+        head,
+        skins: Skins {
+            facenum: scn.skinfacenum,
+        },
+        additive: flag(mjtRndFlag_::mjRND_ADDITIVE),
+        wire,
     };
     let views: &[i32] = if stereo != 0 { &[0, 1] } else { &[-1] };
     for &view in views {
@@ -654,234 +916,65 @@ pub fn render(
                 Mode::Segment
             };
             for g in geoms.iter().filter(|g| g.segid >= 0) {
-                render_geom(gl, g, mode, &head, &skins, con);
+                draw.geom(g, mode);
             }
             continue;
         }
 
-        let additive = flag(mjtRndFlag_::mjRND_ADDITIVE);
-        let blend_transparent = || {
-            gl.glBlendFunc(
-                GL_SRC_ALPHA,
-                if additive {
-                    GL_ONE
-                } else {
-                    GL_ONE_MINUS_SRC_ALPHA
-                },
-            );
-        };
         if flag(mjtRndFlag_::mjRND_REFLECTION) {
-            for i in 0..ngeom {
-                if !is_reflective(&geoms[i]) {
-                    continue;
-                }
-                let mut mirror = geoms[i];
-                if mirror.r#type == GEOM_BOX {
-                    mirror.r#type = GEOM_PLANE;
-                    for k in 0..3 {
-                        mirror.pos[k] += mirror.size[2] * mirror.mat[3 * k + 2];
-                    }
-                }
-                if is_behind(&head, &mirror.pos, &mirror.mat) {
-                    continue;
-                }
-                gl.glDisable(GL_DEPTH_TEST);
-                gl.glColorMask(0, 0, 0, 0);
-                gl.glEnable(GL_STENCIL_TEST);
-                gl.glClear(GL_STENCIL_BUFFER_BIT);
-                gl.glStencilFunc(GL_ALWAYS, 1, 0xFF);
-                gl.glStencilOp(GL_REPLACE, GL_REPLACE, GL_REPLACE);
-                gl.glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
-                render_geom(gl, &mirror, Mode::Normal, &head, &skins, con);
-                gl.glPolygonMode(GL_FRONT_AND_BACK, wire);
-                gl.glEnable(GL_DEPTH_TEST);
-                gl.glColorMask(1, 1, 1, 1);
-                gl.glStencilFunc(GL_EQUAL, 1, 0xFF);
-                gl.glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-                gl.glEnable(GL_CLIP_PLANE0);
-                let (p, mm) = (&mirror.pos, &mirror.mat);
-                let d = p[0] * mm[2] + p[1] * mm[5] + p[2] * mm[8];
-                gl.clip_plane(
-                    GL_CLIP_PLANE0,
-                    &[-mm[2] as f64, -mm[5] as f64, -mm[8] as f64, d as f64],
-                );
-                gl.glFrontFace(GL_CW);
-                gl.glPushMatrix();
-                reflect(gl, &mirror.pos, &mirror.mat);
-                for (j, l) in raw.lights[..nlight].iter().enumerate() {
-                    adjust_light(gl, l, j);
-                    gl.glEnable(GL_LIGHT0 + j as u32);
-                }
-                let r = mirror.reflectance;
-                for j in 0..ngeom {
-                    if geoms[j].transparent == 0 && i != j {
-                        render_reflection(gl, &geoms[j], r, &head, &skins, con);
-                    }
-                }
-                gl.glDepthMask(0);
-                gl.glEnable(GL_BLEND);
-                blend_transparent();
-                for &j in order.iter().filter(|&&j| j != i) {
-                    render_reflection(gl, &geoms[j], r, &head, &skins, con);
-                }
-                if !additive {
-                    for &j in order.iter().rev().filter(|&&j| j != i) {
-                        render_reflection(gl, &geoms[j], r, &head, &skins, con);
-                    }
-                }
-                gl.glDepthMask(1);
-                gl.glDisable(GL_BLEND);
-                for j in 0..nlight {
-                    gl.glDisable(GL_LIGHT0 + j as u32);
-                }
-                gl.glDisable(GL_STENCIL_TEST);
-                gl.glDisable(GL_CLIP_PLANE0);
-                gl.glPopMatrix();
-                gl.glFrontFace(GL_CCW);
-            }
+            reflections(&draw);
         }
-
-        let shadows = flag(mjtRndFlag_::mjRND_SHADOW) && con.shadowFBO != 0;
+        let cast_shadows = flag(mjtRndFlag_::mjRND_SHADOW) && con.shadowFBO != 0;
         for (i, l) in raw.lights[..nlight].iter().enumerate() {
             adjust_light(gl, l, i);
-            if l.castshadow == 0 || !shadows {
+            if l.castshadow == 0 || !cast_shadows {
                 gl.glEnable(GL_LIGHT0 + i as u32);
             }
         }
         gl.glEnable(GL_BLEND);
         gl.glBlendFunc(GL_ONE, GL_ONE);
         for g in geoms.iter().filter(|g| is_reflective(g)) {
-            render_geom(gl, g, Mode::Normal, &head, &skins, con);
+            draw.geom(g, Mode::Normal);
         }
         gl.glDisable(GL_BLEND);
         for g in geoms
             .iter()
             .filter(|g| g.transparent == 0 && !is_reflective(g))
         {
-            render_geom(gl, g, Mode::Normal, &head, &skins, con);
+            draw.geom(g, Mode::Normal);
         }
         for i in 0..nlight {
             gl.glDisable(GL_LIGHT0 + i as u32);
         }
 
         gl.fogfv(GL_FOG_COLOR, &[0.0; 4]);
-        if shadows {
-            for (i, l) in raw.lights[..nlight].iter().enumerate() {
-                if l.castshadow == 0 {
-                    continue;
-                }
-                let up = ortho(&l.dir);
-                gl.glMatrixMode(GL_PROJECTION);
-                gl.glLoadIdentity();
-                let (near, far) = (cam.frustum_near, cam.frustum_far);
-                if l.directional != 0 {
-                    let c = con.shadowClip as f64;
-                    gl.glOrtho(-c, c, -c, c, near as f64, far as f64);
-                } else {
-                    let fovy = 2.0 * l.cutoff * con.shadowScale;
-                    let fovy = if (fovy as f64) < 160.0 { fovy } else { 160.0 };
-                    perspective(gl, fovy, 1.0, near, far);
-                }
-                let light_project = gl.get_floats::<16>(GL_PROJECTION_MATRIX);
-                gl.glMatrixMode(GL_MODELVIEW);
-                gl.glLoadIdentity();
-                look_at(gl, &l.pos, &l.dir, &up);
-                let light_view = gl.get_floats::<16>(GL_MODELVIEW_MATRIX);
-                gl.glBindFramebuffer(GL_FRAMEBUFFER, con.shadowFBO);
-                gl.glDrawBuffer(GL_NONE);
-                gl.glClear(GL_DEPTH_BUFFER_BIT);
-                gl.glViewport(1, 1, con.shadowSize - 2, con.shadowSize - 2);
-                gl.glCullFace(GL_FRONT);
-                gl.glShadeModel(GL_FLAT);
-                gl.glDisable(GL_LIGHTING);
-                gl.glColorMask(0, 0, 0, 0);
-                for g in geoms.iter() {
-                    render_geom(gl, g, Mode::ShadowCast, &head, &skins, con);
-                }
-                gl.glBindFramebuffer(GL_FRAMEBUFFER, if window { 0 } else { con.offFBO });
-                gl.glDrawBuffer(drawbuffer);
-                gl.glViewport(
-                    viewport.left,
-                    viewport.bottom,
-                    viewport.width,
-                    viewport.height,
-                );
-                gl.glCullFace(GL_BACK);
-                gl.glShadeModel(GL_SMOOTH);
-                gl.glEnable(GL_LIGHTING);
-                gl.glColorMask(1, 1, 1, 1);
-                gl.glMatrixMode(GL_PROJECTION);
-                gl.load_matrixf(&cam_project);
-                gl.glMatrixMode(GL_MODELVIEW);
-                gl.load_matrixf(&cam_view);
-                let bias = [
-                    0.5, 0.0, 0.0, 0.0, 0.0, 0.5, 0.0, 0.0, 0.0, 0.0, 0.5, 0.0, 0.5, 0.5, 0.5, 1.0,
-                ];
-                let texture = mul_mat44(&bias, &mul_mat44(&light_project, &light_view));
-                set_texture(gl, Tex::Shadow, true, con, None);
-                for (r, coord) in [GL_S, GL_T, GL_R, GL_Q].into_iter().enumerate() {
-                    gl.tex_genfv(coord, GL_EYE_PLANE, &row4(&texture, r));
-                }
-                gl.glEnable(GL_ALPHA_TEST);
-                gl.glEnable(GL_BLEND);
-                gl.glBlendFunc(GL_ONE, GL_ONE);
-                gl.glEnable(GL_LIGHT0 + i as u32);
-                for g in geoms.iter().filter(|g| g.transparent == 0) {
-                    render_geom(gl, g, Mode::ShadowMap, &head, &skins, con);
-                }
-                gl.glDisable(GL_LIGHT0 + i as u32);
-                gl.glDisable(GL_BLEND);
-                gl.glDisable(GL_ALPHA_TEST);
-                set_texture(gl, Tex::Shadow, false, con, None);
-            }
+        if cast_shadows {
+            let target = Target {
+                project: cam_project,
+                view: cam_view,
+                framebuffer: if window { 0 } else { con.offFBO },
+                drawbuffer,
+                viewport,
+            };
+            shadows(&draw, &cam, &target);
         }
         gl.fogfv(GL_FOG_COLOR, &con.fogRGBA);
 
         if flag(mjtRndFlag_::mjRND_SKYBOX) {
-            gl.glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
-            let skybox = (0..con.ntexture.max(0) as usize)
-                .find(|&i| con.textureType[i] == mjtTexture_::mjTEXTURE_SKYBOX as i32);
-            if let Some(t) = skybox {
-                // SAFETY: mjvGeom is plain data; zeros with a texture id stand for the sky.
-                let mut sky: mjvGeom = unsafe { std::mem::zeroed() };
-                sky.texid = t as i32;
-                gl.glDisable(GL_LIGHTING);
-                gl.glDisable(GL_COLOR_MATERIAL);
-                gl.glCullFace(GL_FRONT);
-                gl.glPushMatrix();
-                gl.glTranslatef(head[0], head[1], head[2]);
-                let mut dst = cam.frustum_far * 0.70;
-                if raw.enabletransform != 0 {
-                    dst /= raw.scale;
-                }
-                gl.glScalef(dst, dst, dst);
-                set_texture(gl, Tex::Skybox, true, con, Some(&sky));
-                gl.glColor4f(1.0, 1.0, 1.0, 1.0);
-                gl.glCallList(con.baseBuiltin + Builtin::Cylinder as u32);
-                set_texture(gl, Tex::Skybox, false, con, Some(&sky));
-                if flag(mjtRndFlag_::mjRND_HAZE) {
-                    haze(gl, geoms, &head, dst, con);
-                }
-                gl.glPopMatrix();
-                gl.glEnable(GL_LIGHTING);
-                gl.glEnable(GL_COLOR_MATERIAL);
-                gl.glCullFace(GL_BACK);
-            }
-            gl.glPolygonMode(GL_FRONT_AND_BACK, wire);
+            skybox(&draw, &cam, raw);
         }
-
         for i in 0..nlight {
             gl.glEnable(GL_LIGHT0 + i as u32);
         }
         gl.glDepthMask(0);
         gl.glEnable(GL_BLEND);
-        blend_transparent();
+        draw.blend_transparent();
         for &j in &order {
-            render_geom(gl, &geoms[j], Mode::Normal, &head, &skins, con);
+            draw.geom(&geoms[j], Mode::Normal);
         }
-        if !additive {
+        if !draw.additive {
             for &j in order.iter().rev() {
-                render_geom(gl, &geoms[j], Mode::Normal, &head, &skins, con);
+                draw.geom(&geoms[j], Mode::Normal);
             }
         }
         gl.glDepthMask(1);
@@ -902,23 +995,7 @@ pub fn render(
         gl.glEnable(GL_LIGHTING);
     }
 
-    let fw = raw.framewidth;
-    if fw != 0 {
-        let c = raw.framergb;
-        gl.glClearColor(c[0], c[1], c[2], 0.0);
-        gl.glEnable(GL_SCISSOR_TEST);
-        let v = &viewport;
-        for (x, y, w, h) in [
-            (v.left, v.bottom, v.width, fw),
-            (v.left, v.bottom + v.height - fw, v.width, fw),
-            (v.left, v.bottom, fw, v.height),
-            (v.left + v.width - fw, v.bottom, fw, v.height),
-        ] {
-            gl.glScissor(x, y, w, h);
-            gl.glClear(GL_COLOR_BUFFER_BIT);
-        }
-        gl.glDisable(GL_SCISSOR_TEST);
-    }
+    frame(gl, raw, &viewport);
     super::framebuffer::restore_buffer(gl, con);
     Ok(())
 }
