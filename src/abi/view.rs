@@ -201,17 +201,27 @@ impl<'a> Arena<'a> {
     /// `n` ints, not zeroed (see `alloc_stale`).
     #[inline]
     pub fn alloc_int_stale(&mut self, n: usize) -> Result<&'a mut [i32], EngineError> {
-        let words = self.alloc_stale(n.div_ceil(2))?;
+        let words = self.alloc_stale(n)?;
         // SAFETY: f64 storage is 8-aligned, initialized and large enough for n i32s.
         Ok(unsafe { std::slice::from_raw_parts_mut(words.as_mut_ptr() as *mut i32, n) })
     }
 
-    /// `n` zeroed ints, taken from the same stack (two per mjtNum).
+    /// `n` zeroed ints, taken from the same stack: one mjtNum each, as 2.2.2's
+    /// `(int*)mj_stackAlloc(d, n)` takes them (so that `maxuse_stack` counts as 2.2.2's).
     #[inline]
     pub fn alloc_int(&mut self, n: usize) -> Result<&'a mut [i32], EngineError> {
-        let words = self.alloc(n.div_ceil(2))?;
+        let words = self.alloc(n)?;
         // SAFETY: f64 storage is 8-aligned and large enough for n i32s; zero bits are 0i32.
         Ok(unsafe { std::slice::from_raw_parts_mut(words.as_mut_ptr() as *mut i32, n) })
+    }
+
+    /// `n` mjtNum-sized slots as u64, not zeroed: for records of two 32-bit fields packed in
+    /// one slot (2.2.2's `mjtBroadphase`, an int and a float).
+    #[inline]
+    pub fn alloc_u64_stale(&mut self, n: usize) -> Result<&'a mut [u64], EngineError> {
+        let words = self.alloc_stale(n)?;
+        // SAFETY: u64 has f64's size and alignment, and every bit pattern is a valid u64.
+        Ok(unsafe { std::slice::from_raw_parts_mut(words.as_mut_ptr() as *mut u64, n) })
     }
 
     /// Runs `f` with a nested arena; everything it allocates is released afterwards.
