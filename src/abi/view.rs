@@ -244,6 +244,14 @@ impl<'a> Arena<'a> {
     }
 }
 
+/// The first `words.len()` ints of a span of mjtNums (2.2.2's `(int*)` reuse of an mjtNum
+/// buffer as int scratch, one int per slot's first half).
+pub fn ints_of(words: &mut [f64]) -> &mut [i32] {
+    // SAFETY: f64 storage is 8-aligned and twice the size of the ints taken; every bit
+    // pattern is a valid i32.
+    unsafe { std::slice::from_raw_parts_mut(words.as_mut_ptr() as *mut i32, words.len()) }
+}
+
 /// Writable view of an abstract scene (mjvScene): its header, and its geom and skin vertex
 /// buffers as slices.
 pub struct Scene<'a> {

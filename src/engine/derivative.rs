@@ -10,6 +10,7 @@ use super::jacdif::is_sparse;
 use super::jacobian::jac;
 use super::linalg::{add_to, add_to_scl, max, min};
 use super::{disabled, Data, EngineError, Model, JNT_BALL, JNT_FREE, MINVAL};
+use crate::abi::view::Arena;
 use crate::abi::*;
 use crate::math::blas::{mul_mat_mat, mul_mat_t_mat, transpose};
 use crate::math::*;
@@ -550,18 +551,24 @@ impl BodyJac<'_> {
 }
 
 impl<'s> BodyJac<'s> {
-    /// Workspace for bodies of `m`, from the arena (reused for every body).
-    fn new(m: &Model, d: &mut Data<'s>) -> Result<Self, EngineError> {
+    /// Workspace for bodies of `m`, from the arena (reused for every body): 2.2.2's 15 nv of
+    /// stack per body, 21 nv for the ellipsoid model (`ellipsoid`: some body uses it).
+    fn new(m: &Model, a: &mut Arena<'s>, ellipsoid: bool) -> Result<Self, EngineError> {
         let nv = m.raw.nv as usize;
-        Ok(BodyJac {
-            j: d.arena.alloc(6 * nv)?,
-            tmp: d.arena.alloc(3 * nv)?,
+        let bj = BodyJac {
+            j: a.alloc(6 * nv)?,
+            tmp: a.alloc(3 * nv)?,
             rownnz: [0; 6],
             rowadr: [0; 6],
-            colind: d.arena.alloc_int(6 * nv)?,
+            colind: a.alloc_int(6 * nv)?,
             nnz: nv,
             sparse: is_sparse(m),
-        })
+        };
+        if ellipsoid {
+            // its compressed column indices: not needed here, taken for the stack's count
+            a.alloc_int_stale(6 * nv)?;
+        }
+        Ok(bj)
     }
 
     /// Sets the row structure for `body` (sparse: its chain of dofs in every row).
@@ -688,17 +695,19 @@ pub fn passive_vel(m: &Model, d: &mut Data, dfdv: &mut [f64]) -> Result<(), Engi
         }
     }
     if m.raw.opt.viscosity > 0.0 || m.raw.opt.density > 0.0 {
-        let mut bj = BodyJac::new(m, d)?;
-        for b in 1..m.raw.nbody as usize {
-            if m.body_mass()[b] < MINVAL {
-                continue;
+        let fluid = |b: &usize| m.body_mass()[*b] >= MINVAL;
+        let ellipsoid = (1..m.raw.nbody as usize).filter(fluid).any(|b| uses_ellipsoid(m, b));
+        d.with_scratch(|d, a| -> Result<(), EngineError> {
+            let mut bj = BodyJac::new(m, a, ellipsoid)?;
+            for b in (1..m.raw.nbody as usize).filter(fluid) {
+                if uses_ellipsoid(m, b) {
+                    ellipsoid_fluid_vel(m, d, &mut bj, dfdv, b);
+                } else {
+                    inertia_box_fluid_vel(m, d, &mut bj, dfdv, b);
+                }
             }
-            if uses_ellipsoid(m, b) {
-                ellipsoid_fluid_vel(m, d, &mut bj, dfdv, b);
-            } else {
-                inertia_box_fluid_vel(m, d, &mut bj, dfdv, b);
-            }
-        }
+            Ok(())
+        })?;
     }
     Ok(())
 }
@@ -763,13 +772,17 @@ fn com_vel_vel(m: &Model, d: &Data, dcvel: &mut [f64], dcdofdot: &mut [f64]) {
 
 /// dfdv -= d qfrc_bias / d qvel.
 fn rne_vel(m: &Model, d: &mut Data, dfdv: &mut [f64]) -> Result<(), EngineError> {
+    d.with_scratch(|d, a| rne_vel_in(m, d, a, dfdv))
+}
+
+fn rne_vel_in(m: &Model, d: &mut Data, a: &mut Arena, dfdv: &mut [f64]) -> Result<(), EngineError> {
     let nv = m.raw.nv as usize;
     let nbody = m.raw.nbody as usize;
     let blk = 6 * nv;
-    let dcvel = d.arena.alloc(nbody * blk)?;
-    let dcdofdot = d.arena.alloc(nv * blk)?;
-    let dcacc = d.arena.alloc(nbody * blk)?;
-    let dcfrc = d.arena.alloc(nbody * blk)?;
+    let dcvel = a.alloc(nbody * blk)?;
+    let dcdofdot = a.alloc(nv * blk)?;
+    let dcacc = a.alloc(nbody * blk)?;
+    let dcfrc = a.alloc(nbody * blk)?;
     com_vel_vel(m, d, dcvel, dcdofdot);
     dcacc.fill(0.0);
     for i in 1..nbody {
@@ -828,6 +841,7 @@ fn rne_vel(m: &Model, d: &mut Data, dfdv: &mut [f64]) -> Result<(), EngineError>
 /// (mjd_smooth_vel).
 pub fn smooth_vel(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     let nv = m.raw.nv as usize;
+    // dfdv stays to the caller's release; the nested stages free theirs
     let dfdv = d.arena.alloc(nv * nv)?;
     actuator_vel(m, d, dfdv);
     passive_vel(m, d, dfdv)?;
