@@ -93,6 +93,22 @@ macro_rules! data_views {
                 $(let $name = array_view(d.$name, row_len!(m, $d1, $($d2)+));)*
                 Data { raw: d, arena, $($name,)* }
             }
+
+            /// Runs `f` on a reborrowed view whose stack allocations are released afterwards
+            /// (2.2.2's mjMARKSTACK / mjFREESTACK around a call); their high-water mark stays.
+            pub fn scoped<R>(&mut self, f: impl FnOnce(&mut Data<'_>) -> R) -> R {
+                let used = self.arena.used;
+                let mut inner = Data {
+                    raw: &mut *self.raw,
+                    arena: Arena { free: &mut *self.arena.free, used, peak: used },
+                    $($name: &mut *self.$name,)*
+                };
+                let r = f(&mut inner);
+                let peak = inner.arena.peak;
+                drop(inner);
+                self.arena.peak = self.arena.peak.max(peak);
+                r
+            }
         }
     };
 }

@@ -269,7 +269,12 @@ fn equality(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> {
     // the chains and the merge buffers only for sparse Jacobians, as 2.2.2 takes them
     let (chain, chain2, buf_ind, buf): (&mut [i32], &mut [i32], &mut [i32], &mut [f64]) = if sparse
     {
-        (a.alloc_int(nv)?, a.alloc_int(nv)?, a.alloc_int(nv)?, a.alloc(nv)?)
+        (
+            a.alloc_int(nv)?,
+            a.alloc_int(nv)?,
+            a.alloc_int(nv)?,
+            a.alloc(nv)?,
+        )
     } else {
         (&mut [], &mut [], &mut [], &mut [])
     };

@@ -696,7 +696,9 @@ pub fn passive_vel(m: &Model, d: &mut Data, dfdv: &mut [f64]) -> Result<(), Engi
     }
     if m.raw.opt.viscosity > 0.0 || m.raw.opt.density > 0.0 {
         let fluid = |b: &usize| m.body_mass()[*b] >= MINVAL;
-        let ellipsoid = (1..m.raw.nbody as usize).filter(fluid).any(|b| uses_ellipsoid(m, b));
+        let ellipsoid = (1..m.raw.nbody as usize)
+            .filter(fluid)
+            .any(|b| uses_ellipsoid(m, b));
         d.with_scratch(|d, a| -> Result<(), EngineError> {
             let mut bj = BodyJac::new(m, a, ellipsoid)?;
             for b in (1..m.raw.nbody as usize).filter(fluid) {

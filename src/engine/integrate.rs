@@ -60,13 +60,7 @@ pub fn differentiate_pos(m: &Model, qvel: &mut [f64], dt: f64, qpos1: &[f64], qp
 
 /// Advances act, qvel, qpos and time (act with `act_dot` when given, else d.act_dot; qpos with
 /// `qvel` when given, else the new d.qvel).
-fn advance(
-    m: &Model,
-    d: &mut Data,
-    act_dot: Option<&[f64]>,
-    qacc: &[f64],
-    qvel: Option<&[f64]>,
-) {
+fn advance(m: &Model, d: &mut Data, act_dot: Option<&[f64]>, qacc: &[f64], qvel: Option<&[f64]>) {
     let h = m.raw.opt.timestep;
     let (nu, na) = (m.raw.nu as usize, m.raw.na as usize);
     if na > 0 {

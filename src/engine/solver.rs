@@ -817,8 +817,7 @@ fn hessian_cone(m: &Model, d: &mut Data, a: &mut Arena, c: &mut Ctx) -> Result<(
                     let adr = d.efc_J_rowadr[i + r] as usize;
                     ind[..n].copy_from_slice(&d.efc_J_colind[adr..adr + n]);
                     chol_update_sparse(
-                        c.hcone, row, nv, true, c.rownnz, c.rowadr, c.colind, n, ind, buf,
-                        buf_ind,
+                        c.hcone, row, nv, true, c.rownnz, c.rowadr, c.colind, n, ind, buf, buf_ind,
                     )
                     .map_err(|e| EngineError(e.into()))?;
                 } else {
@@ -847,39 +846,49 @@ fn hessian_incremental(
     let refactor = a.scope(|a| -> Result<bool, EngineError> {
         let hvec = a.alloc_stale(nv)?;
         let vec_ind = a.alloc_int_stale(nv)?;
-        let (buf_ind, buf): (&mut [i32], &mut [f64]) = if c.sparse {
-            (a.alloc_int_stale(nv)?, a.alloc_stale(nv)?)
-        } else {
-            (&mut [], &mut [])
-        };
-        for i in 0..nefc {
-            let (was, is) = (oldstate[i] == QUADRATIC, d.efc_state[i] == QUADRATIC);
-            if was == is {
-                continue;
-            }
-            let s = d.efc_D[i].sqrt();
-            let rank = if c.sparse {
-                let (n, adr) = (d.efc_J_rownnz[i] as usize, d.efc_J_rowadr[i] as usize);
-                for k in 0..n {
-                    hvec[k] = d.efc_J[adr + k] * s;
+        let lost = a.scope(|a| -> Result<bool, EngineError> {
+            // the sparse update's own scratch (2.2.2 takes it in each update, so only once a
+            // row changes), released before the cone update
+            let mut scratch: Option<(&mut [i32], &mut [f64])> = None;
+            for i in 0..nefc {
+                let (was, is) = (oldstate[i] == QUADRATIC, d.efc_state[i] == QUADRATIC);
+                if was == is {
+                    continue;
                 }
-                vec_ind[..n].copy_from_slice(&d.efc_J_colind[adr..adr + n]);
-                chol_update_sparse(
-                    c.h, hvec, nv, is, c.rownnz, c.rowadr, c.colind, n, vec_ind, buf, buf_ind,
-                )
-                .map_err(|e| EngineError(e.into()))?
-            } else {
-                for k in 0..nv {
-                    hvec[k] = d.efc_J[i * nv + k] * s;
+                let s = d.efc_D[i].sqrt();
+                let rank = if c.sparse {
+                    let (n, adr) = (d.efc_J_rownnz[i] as usize, d.efc_J_rowadr[i] as usize);
+                    for k in 0..n {
+                        hvec[k] = d.efc_J[adr + k] * s;
+                    }
+                    vec_ind[..n].copy_from_slice(&d.efc_J_colind[adr..adr + n]);
+                    if scratch.is_none() {
+                        scratch = Some((a.alloc_int_stale(nv)?, a.alloc_stale(nv)?));
+                    }
+                    let Some((buf_ind, buf)) = scratch.as_mut() else {
+                        unreachable!()
+                    };
+                    chol_update_sparse(
+                        c.h, hvec, nv, is, c.rownnz, c.rowadr, c.colind, n, vec_ind, buf, buf_ind,
+                    )
+                    .map_err(|e| EngineError(e.into()))?
+                } else {
+                    for k in 0..nv {
+                        hvec[k] = d.efc_J[i * nv + k] * s;
+                    }
+                    chol_update(c.h, hvec, nv, is)
+                };
+                c.nupdate += 1;
+                if rank < nv {
+                    return Ok(true);
                 }
-                chol_update(c.h, hvec, nv, is)
-            };
-            c.nupdate += 1;
-            if rank < nv {
-                return Ok(true);
             }
+            Ok(false)
+        })?;
+        if lost {
+            return Ok(true);
         }
-        // the cone update runs above this scratch, as in 2.2.2
+        // the cone update runs above vec and vec_ind, as in 2.2.2
         if c.ncone > 0 {
             hessian_cone(m, d, a, c)?;
         }
