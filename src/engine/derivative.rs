@@ -1079,6 +1079,20 @@ pub fn step_fd(
     let mut sensor_plus = vec![0.0; ns];
     let mut sensor_minus = vec![0.0; ns];
     let mut ctrl = vec![0.0; nu];
+    let dpos = std::cell::RefCell::new(vec![0.0; nv]);
+
+    // the buffers live on the heap; the stack counts what 2.2.2 takes for them (states,
+    // warm start, sensors, controls, and the position nudge in the position pass), so the
+    // nudged steps run at its stack depth
+    let base = 4 * nx + if use_warm { nv } else { 0 } + if skipsensor { 0 } else { 3 * ns } + nu;
+    let dpos_words = std::cell::Cell::new(0);
+    let outer = with;
+    let with = &mut |f: &mut dyn FnMut(&mut Data) -> Result<(), EngineError>| {
+        outer(&mut |d| {
+            d.arena.alloc_stale(base + dpos_words.get())?;
+            f(d)
+        })
+    };
 
     with(&mut |d| {
         ctrl.copy_from_slice(&d.ctrl[..nu]);
@@ -1176,12 +1190,15 @@ pub fn step_fd(
         if dy.is_none() && ds.is_none() {
             continue;
         }
+        if matches!(input, Input::Pos) {
+            dpos_words.set(nv);
+        }
         for i in 0..n {
             let nudge = |d: &mut Data, sgn: f64| -> Result<(), EngineError> {
                 match input {
                     Input::Act => d.act[i] += sgn * eps,
                     Input::Vel => d.qvel[i] += sgn * eps,
-                    Input::Pos => pos_nudge(m, d, i, sgn * eps)?,
+                    Input::Pos => pos_nudge(m, d, &mut dpos.borrow_mut(), i, sgn * eps),
                 }
                 Ok(())
             };
@@ -1221,11 +1238,10 @@ pub fn step_fd(
 }
 
 /// qpos moved by `h` along dof `i` (a unit velocity integrated over h).
-fn pos_nudge(m: &Model, d: &mut Data, i: usize, h: f64) -> Result<(), EngineError> {
-    let dpos = d.arena.alloc(m.raw.nv as usize)?;
+fn pos_nudge(m: &Model, d: &mut Data, dpos: &mut [f64], i: usize, h: f64) {
+    dpos.fill(0.0);
     dpos[i] = 1.0;
     integrate_pos(m, d.qpos, dpos, h);
-    Ok(())
 }
 
 /// Transition matrices A, B, C, D of mj_step by finite differences (mjd_transitionFD).
@@ -1247,6 +1263,15 @@ pub fn transition_fd(
     let mut bt = vec![0.0; if b.is_some() { nu * ndx } else { 0 }];
     let mut ct = vec![0.0; if c.is_some() { ndx * ns } else { 0 }];
     let mut dt = vec![0.0; if dm.is_some() { nu * ns } else { 0 }];
+    // the stack counts the transposed matrices as 2.2.2 takes them there
+    let words = at.len() + bt.len() + ct.len() + dt.len();
+    let outer = with;
+    let with = &mut |f: &mut dyn FnMut(&mut Data) -> Result<(), EngineError>| {
+        outer(&mut |d| {
+            d.arena.alloc_stale(words)?;
+            f(d)
+        })
+    };
     let mut out = StepFd::default();
     if a.is_some() {
         let (q, rest) = at.split_at_mut(ndx * nv);
