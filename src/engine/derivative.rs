@@ -1023,7 +1023,10 @@ fn clamped_state_diff(
         (None, Some(mi)) => state_diff(m, ds, mi, s, h),
         (Some(p), Some(mi)) => state_diff(m, ds, mi, p, 2.0 * h),
         (None, None) => {
+            // 2.2.2 zeroes nq+nv+na values from the row (past it when nq > nv: into the next
+            // row, which is written after, or past the last row's end): within the output here
             let n = (m.raw.nq + m.raw.nv + m.raw.na) as usize;
+            let n = n.min(ds.len());
             ds[..n].fill(0.0)
         }
     }

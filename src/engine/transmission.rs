@@ -302,7 +302,10 @@ fn body<'s>(
     let elliptic = m.raw.opt.cone == mjtCone_::mjCONE_ELLIPTIC as i32;
     let sparse = is_sparse(m);
     d.actuator_length[i] = 0.0;
-    if s.body.is_none() {
+    // 2.2.2 keeps the first body transmission's buffers for the next ones, marked by the rows'
+    // buffer, which it does not get without rows (an empty allocation): then every body
+    // transmission takes new ones
+    if s.body.is_none() || nefc == 0 {
         s.body = Some(BodyScratch {
             efc_force: a.alloc(nefc)?,
             exclude: a.alloc(nv)?,
