@@ -253,6 +253,12 @@ impl<'a> Arena<'a> {
         r
     }
 
+    /// Restarts the high-water mark (mj_resetData clears `maxuse_stack`; later use counts anew).
+    #[inline]
+    pub fn reset_peak(&mut self) {
+        self.peak = 0;
+    }
+
     /// Number of mjtNums in use, counted from the bottom of the `mjData` stack.
     #[inline]
     pub fn used(&self) -> usize {
