@@ -4,7 +4,8 @@
 // prints one line of name=value pairs (or "load-error"). The stage values are measured with
 // maxuse_stack cleared before each call. Overflow: the trajectory's first 20 steps run again
 // with nstack set to the high-water mark they reached (must pass) and one below (must stop
-// with the reference's error message), each in a child process.
+// with the reference's error message), each in a child process. The callbacks' view of the
+// stack top: calls, sum and maximum of pstack per callback over one mj_forward and mj_step.
 
 #define _DEFAULT_SOURCE
 #include <math.h>
@@ -75,6 +76,45 @@ static int steps_with_stack(mjModel* m, int nstack) {
   int status = 0;
   waitpid(pid, &status, 0);
   return WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+
+// The stack top the callbacks see: per callback, calls and the sum and maximum of pstack.
+enum { CB_CONTROL, CB_PASSIVE, CB_FILTER, CB_GAIN, CB_BIAS, CB_DYN, CB_SENSOR, NCB };
+static const char* cb_name[NCB] = {"control", "passive", "contactfilter", "act_gain",
+                                   "act_bias", "act_dyn", "sensor"};
+static long cb_count[NCB], cb_sum[NCB];
+static int cb_max[NCB];
+
+static void seen(int cb, const mjData* d) {
+  cb_count[cb]++;
+  cb_sum[cb] += d->pstack;
+  if (d->pstack > cb_max[cb]) cb_max[cb] = d->pstack;
+}
+static void cb_control(const mjModel* m, mjData* d) { (void)m; seen(CB_CONTROL, d); }
+static void cb_passive(const mjModel* m, mjData* d) { (void)m; seen(CB_PASSIVE, d); }
+static int cb_filter(const mjModel* m, mjData* d, int g1, int g2) {
+  (void)m, (void)g1, (void)g2;
+  seen(CB_FILTER, d);
+  return 0;
+}
+static mjtNum cb_gain(const mjModel* m, const mjData* d, int i) {
+  (void)m, (void)i;
+  seen(CB_GAIN, d);
+  return 1;
+}
+static mjtNum cb_bias(const mjModel* m, const mjData* d, int i) {
+  (void)m, (void)i;
+  seen(CB_BIAS, d);
+  return 0;
+}
+static mjtNum cb_dyn(const mjModel* m, const mjData* d, int i) {
+  (void)m, (void)i;
+  seen(CB_DYN, d);
+  return 0;
+}
+static void cb_sensor(const mjModel* m, mjData* d, int stage) {
+  (void)m, (void)stage;
+  seen(CB_SENSOR, d);
 }
 
 #define STAGE(name, call)                              \
@@ -188,6 +228,26 @@ int main(int argc, char** argv) {
   STAGE("setConst", mj_setConst(m, d));
   free(a);
   free(b);
+
+  // the stack top in the callbacks, over one mj_forward and one mj_step
+  mjcb_control = cb_control;
+  mjcb_passive = cb_passive;
+  mjcb_contactfilter = cb_filter;
+  mjcb_act_gain = cb_gain;
+  mjcb_act_bias = cb_bias;
+  mjcb_act_dyn = cb_dyn;
+  mjcb_sensor = cb_sensor;
+  mj_forward(m, d);
+  mj_step(m, d);
+  mjcb_control = mjcb_passive = NULL;
+  mjcb_contactfilter = NULL;
+  mjcb_act_gain = mjcb_act_bias = mjcb_act_dyn = NULL;
+  mjcb_sensor = NULL;
+  for (int i = 0; i < NCB; i++) {
+    if (cb_count[i]) {
+      printf(" cb.%s=%ld/%ld/%d", cb_name[i], cb_count[i], cb_sum[i], cb_max[i]);
+    }
+  }
 
   // overflow point
   printf(" overflow: nstack=%d", peak20);

@@ -1,8 +1,9 @@
 //! The mjData stack as 2.2.2 uses it (capi-tests/stack.c on both libraries): `maxuse_stack`
 //! after a driven trajectory and after each stage and API function that takes scratch (the
 //! solvers and cones, noslip, the integrators, mj_compareFwdInv, the Jacobian helpers,
-//! mjd_transitionFD, mj_printData, mj_setConst), and the stack size below which mj_step stops
-//! with "Stack overflow", on models.list, models-extra.list and the main corpus, with and
+//! mjd_transitionFD, mj_printData, mj_setConst), the stack top every callback sees, and the
+//! stack size below which mj_step stops with "Stack overflow", on models.list,
+//! models-extra.list and the main corpus, with and
 //! without constraints and contacts (disable flags 17). Every line must be the reference's.
 //! Report: stack.txt.
 

@@ -169,7 +169,9 @@ pub fn broadphase<'a>(
     }
 
     if let Some(frame) = principal_frame(m, d) {
-        sweep_and_prune(m, d, a, &frame, &mut pairs)?;
+        // its buffers are released on return, the pair list stays (the contact filter then
+        // sees 2.2.2's stack top)
+        a.scope(|a| sweep_and_prune(m, d, a, &frame, &mut pairs))?;
     }
 
     // integers: any sort gives glibc's order
