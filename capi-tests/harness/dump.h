@@ -147,10 +147,8 @@ inline void dump_data(const mjModel* m, const mjData* d, Writer& w, const std::s
   MJDATA_POINTERS
 #undef X
   dump_contacts(d, w, inst);
-  // maxuse_stack depends on the implementation's scratch use: left out
-#define X(type, name)                                            \
-  if (std::strcmp(#name, "maxuse_stack"))                        \
-    w.raw(#name "#" + inst, type_code<type>(""), &d->name, sizeof(type));
+  // maxuse_stack included: the stack is taken in 2.2.2's sizes and nesting
+#define X(type, name) w.raw(#name "#" + inst, type_code<type>(""), &d->name, sizeof(type));
   MJDATA_SCALAR
 #undef X
   w.d("energy#" + inst, d->energy, 2);

@@ -93,6 +93,8 @@ inline void run_trajectory(const mjModel* m, mjData* d, Writer& traj, Writer* st
       traj.d("traj.sensordata#" + k, d->sensordata, m->nsensordata);
     }
   }
+  // the stack's high-water mark over the whole trajectory (2.2.2's scratch sizes and nesting)
+  traj.i1("traj.maxuse_stack", d->maxuse_stack);
   if (states) states->i1("nstate", nstate);
 }
 

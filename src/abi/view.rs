@@ -93,6 +93,22 @@ macro_rules! data_views {
                 $(let $name = array_view(d.$name, row_len!(m, $d1, $($d2)+));)*
                 Data { raw: d, arena, $($name,)* }
             }
+
+            /// Runs `f` on a reborrowed view whose stack allocations are released afterwards
+            /// (2.2.2's mjMARKSTACK / mjFREESTACK around a call); their high-water mark stays.
+            pub fn scoped<R>(&mut self, f: impl FnOnce(&mut Data<'_>) -> R) -> R {
+                let used = self.arena.used;
+                let mut inner = Data {
+                    raw: &mut *self.raw,
+                    arena: Arena { free: &mut *self.arena.free, used, peak: used },
+                    $($name: &mut *self.$name,)*
+                };
+                let r = f(&mut inner);
+                let peak = inner.arena.peak;
+                drop(inner);
+                self.arena.peak = self.arena.peak.max(peak);
+                r
+            }
         }
     };
 }
@@ -201,17 +217,27 @@ impl<'a> Arena<'a> {
     /// `n` ints, not zeroed (see `alloc_stale`).
     #[inline]
     pub fn alloc_int_stale(&mut self, n: usize) -> Result<&'a mut [i32], EngineError> {
-        let words = self.alloc_stale(n.div_ceil(2))?;
+        let words = self.alloc_stale(n)?;
         // SAFETY: f64 storage is 8-aligned, initialized and large enough for n i32s.
         Ok(unsafe { std::slice::from_raw_parts_mut(words.as_mut_ptr() as *mut i32, n) })
     }
 
-    /// `n` zeroed ints, taken from the same stack (two per mjtNum).
+    /// `n` zeroed ints, taken from the same stack: one mjtNum each, as 2.2.2's
+    /// `(int*)mj_stackAlloc(d, n)` takes them (so that `maxuse_stack` counts as 2.2.2's).
     #[inline]
     pub fn alloc_int(&mut self, n: usize) -> Result<&'a mut [i32], EngineError> {
-        let words = self.alloc(n.div_ceil(2))?;
+        let words = self.alloc(n)?;
         // SAFETY: f64 storage is 8-aligned and large enough for n i32s; zero bits are 0i32.
         Ok(unsafe { std::slice::from_raw_parts_mut(words.as_mut_ptr() as *mut i32, n) })
+    }
+
+    /// `n` mjtNum-sized slots as u64, not zeroed: for records of two 32-bit fields packed in
+    /// one slot (2.2.2's `mjtBroadphase`, an int and a float).
+    #[inline]
+    pub fn alloc_u64_stale(&mut self, n: usize) -> Result<&'a mut [u64], EngineError> {
+        let words = self.alloc_stale(n)?;
+        // SAFETY: u64 has f64's size and alignment, and every bit pattern is a valid u64.
+        Ok(unsafe { std::slice::from_raw_parts_mut(words.as_mut_ptr() as *mut u64, n) })
     }
 
     /// Runs `f` with a nested arena; everything it allocates is released afterwards.
@@ -227,11 +253,25 @@ impl<'a> Arena<'a> {
         r
     }
 
+    /// Restarts the high-water mark (mj_resetData clears `maxuse_stack`; later use counts anew).
+    #[inline]
+    pub fn reset_peak(&mut self) {
+        self.peak = 0;
+    }
+
     /// Number of mjtNums in use, counted from the bottom of the `mjData` stack.
     #[inline]
     pub fn used(&self) -> usize {
         self.used
     }
+}
+
+/// The first `words.len()` ints of a span of mjtNums (2.2.2's `(int*)` reuse of an mjtNum
+/// buffer as int scratch, one int per slot's first half).
+pub fn ints_of(words: &mut [f64]) -> &mut [i32] {
+    // SAFETY: f64 storage is 8-aligned and twice the size of the ints taken; every bit
+    // pattern is a valid i32.
+    unsafe { std::slice::from_raw_parts_mut(words.as_mut_ptr() as *mut i32, words.len()) }
 }
 
 /// Writable view of an abstract scene (mjvScene): its header, and its geom and skin vertex

@@ -984,8 +984,7 @@ pub(super) unsafe fn run_const<R>(
 #[no_mangle]
 pub unsafe extern "C" fn mj_subtreeVel(m: *const mjModel, d: *mut mjData) {
     run("mj_subtreeVel", (), m, d, |m, d| {
-        engine::velocity::subtree_vel(m, d);
-        Ok(())
+        engine::velocity::subtree_vel(m, d)
     })
 }
 

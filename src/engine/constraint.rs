@@ -214,6 +214,33 @@ pub(super) fn add_rows(
     Ok(true)
 }
 
+/// Copies tendon i's Jacobian row into `jacobian` (dense: nv values; sparse: its nonzeros);
+/// returns the row's (address, length) in the sparse `ten_J` (None when dense).
+fn tendon_jac(m: &Model, d: &Data, i: usize, jacobian: &mut [f64]) -> Option<(usize, usize)> {
+    let nv = m.raw.nv as usize;
+    if is_sparse(m) {
+        let (adr, n) = (d.ten_J_rowadr[i] as usize, d.ten_J_rownnz[i] as usize);
+        jacobian[..n].copy_from_slice(&d.ten_J[adr..adr + n]);
+        Some((adr, n))
+    } else {
+        jacobian[..nv].copy_from_slice(&d.ten_J[i * nv..(i + 1) * nv]);
+        None
+    }
+}
+
+/// Runs `f` with the dofs of a sparse tendon row (`tendon_jac`'s address and length) read in
+/// place from `ten_J_colind`, as 2.2.2 passes them (no scratch chain on the stack).
+fn with_tendon_chain<R>(
+    d: &mut Data,
+    adr: Option<(usize, usize)>,
+    f: impl FnOnce(&mut Data, Option<&[i32]>) -> R,
+) -> R {
+    let colind = std::mem::take(&mut d.ten_J_colind);
+    let r = f(d, adr.map(|(a, n)| &colind[a..a + n]));
+    d.ten_J_colind = colind;
+    r
+}
+
 /// Copies tendon i's Jacobian row into `jacobian` (dense: nv values; sparse: its nonzeros, with
 /// their dofs in `chain`); returns the sparse length (0 when dense).
 fn tendon_row(m: &Model, d: &Data, i: usize, jacobian: &mut [f64], chain: &mut [i32]) -> usize {
@@ -239,10 +266,18 @@ fn equality(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> {
     let j0 = a.alloc(6 * nv)?;
     let j1 = a.alloc(6 * nv)?;
     let jd = a.alloc(6 * nv)?;
-    let chain = a.alloc_int(nv)?;
-    let chain2 = a.alloc_int(nv)?;
-    let buf_ind = a.alloc_int(nv)?;
-    let buf = a.alloc(nv)?;
+    // the chains and the merge buffers only for sparse Jacobians, as 2.2.2 takes them
+    let (chain, chain2, buf_ind, buf): (&mut [i32], &mut [i32], &mut [i32], &mut [f64]) = if sparse
+    {
+        (
+            a.alloc_int(nv)?,
+            a.alloc_int(nv)?,
+            a.alloc_int(nv)?,
+            a.alloc(nv)?,
+        )
+    } else {
+        (&mut [], &mut [], &mut [], &mut [])
+    };
     for i in 0..m.raw.neq as usize {
         if m.eq_active()[i] == 0 {
             continue;
@@ -396,13 +431,14 @@ fn friction(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> {
             }
         }
     }
-    let chain = a.alloc_int(nv)?;
     for i in 0..m.raw.ntendon as usize {
         let f = m.tendon_frictionloss()[i];
         if f > 0.0 {
-            let n = tendon_row(m, d, i, j, chain);
-            let ch = if sparse { Some(&chain[..n]) } else { None };
-            if !add_rows(m, d, j, ch, None, None, f, 1, FRICTION_TENDON, i)? {
+            let adr = tendon_jac(m, d, i, j);
+            let added = with_tendon_chain(d, adr, |d, ch| {
+                add_rows(m, d, j, ch, None, None, f, 1, FRICTION_TENDON, i)
+            })?;
+            if !added {
                 break;
             }
         }
@@ -472,7 +508,6 @@ fn limits(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> {
             _ => {}
         }
     }
-    let chain = a.alloc_int(nv)?;
     for i in 0..m.raw.ntendon as usize {
         if m.tendon_limited()[i] == 0 {
             continue;
@@ -483,14 +518,16 @@ fn limits(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> {
             let lim = m.tendon_range()[2 * i + (side > 0.0) as usize];
             let dist = side * (lim - value);
             if dist < margin {
-                let n = tendon_row(m, d, i, j, chain);
-                let len = if sparse { n } else { nv };
+                let adr = tendon_jac(m, d, i, j);
+                let len = adr.map_or(nv, |(_, n)| n);
                 for x in &mut j[..len] {
                     *x *= -side;
                 }
-                let ch = if sparse { Some(&chain[..n]) } else { None };
                 let (p, mg) = ([dist], [margin]);
-                if !add_rows(m, d, j, ch, Some(&p), Some(&mg), 0.0, 1, LIMIT_TENDON, i)? {
+                let added = with_tendon_chain(d, adr, |d, ch| {
+                    add_rows(m, d, j, ch, Some(&p), Some(&mg), 0.0, 1, LIMIT_TENDON, i)
+                })?;
+                if !added {
                     break;
                 }
             }
@@ -703,11 +740,12 @@ pub fn make_constraint(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     if disabled(m, mjtDisableBit_::mjDSBL_CONSTRAINT) || m.raw.njmax == 0 {
         return Ok(());
     }
+    // each instantiation frees its scratch before the next (2.2.2's mark and free per call)
     with_arena(d, |d, a| -> Result<(), EngineError> {
-        equality(m, d, a)?;
-        friction(m, d, a)?;
-        limits(m, d, a)?;
-        super::contact::instantiate(m, d, a)
+        a.scope(|a| equality(m, d, a))?;
+        a.scope(|a| friction(m, d, a))?;
+        a.scope(|a| limits(m, d, a))?;
+        a.scope(|a| super::contact::instantiate(m, d, a))
     })?;
     d.raw.maxuse_con = d.raw.maxuse_con.max(d.raw.ncon);
     d.raw.maxuse_efc = d.raw.maxuse_efc.max(d.raw.nefc);

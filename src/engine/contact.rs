@@ -30,12 +30,12 @@ pub fn instantiate(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineE
     let nv = m.raw.nv as usize;
     let pyramid = super::constraint::is_pyramidal(m);
     let sparse = super::constraint::is_sparse(m);
+    // 2.2.2's 24 nv (+ nv for the sparse chain); the pyramid edges reuse the difference
     let jac = a.alloc_stale(6 * nv)?;
     let jacdif = a.alloc_stale(6 * nv)?;
     let jac1 = a.alloc_stale(6 * nv)?;
     let jac2 = a.alloc_stale(6 * nv)?;
-    let edges = a.alloc_stale(2 * nv)?;
-    let chain = a.alloc_int(nv)?;
+    let chain: &mut [i32] = if sparse { a.alloc_int(nv)? } else { &mut [] };
     for i in 0..ncon {
         if d.contact[i].exclude != 0 {
             continue;
@@ -88,7 +88,7 @@ pub fn instantiate(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineE
             let (_, rot) = jacdif.split_at(3 * nv);
             mul_mat_mat(&mut jac[3 * n..], &con.frame, &rot[..3 * n], dim - 3, 3, n);
         }
-        let ch = sparse.then_some(&chain[..n]);
+        let ch = if sparse { Some(&chain[..n]) } else { None };
         if dim == 1 {
             let (p, mg) = ([con.dist], [con.includemargin]);
             add_rows(m, d, jac, ch, Some(&p), Some(&mg), 0.0, 1, FRICTIONLESS, i)?;
@@ -96,10 +96,10 @@ pub fn instantiate(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineE
             let (p, mg) = ([con.dist; 2], [con.includemargin; 2]);
             for k in 1..dim {
                 let mu = con.friction[k - 1];
-                let (first, second) = edges.split_at_mut(n);
+                let (first, second) = jacdif.split_at_mut(n);
                 add_scl(first, &jac[..n], &jac[k * n..(k + 1) * n], mu);
                 add_scl(&mut second[..n], &jac[..n], &jac[k * n..(k + 1) * n], -mu);
-                add_rows(m, d, edges, ch, Some(&p), Some(&mg), 0.0, 2, PYRAMIDAL, i)?;
+                add_rows(m, d, jacdif, ch, Some(&p), Some(&mg), 0.0, 2, PYRAMIDAL, i)?;
             }
         } else {
             let (mut p, mut mg) = ([0.0; 6], [0.0; 6]);

@@ -10,6 +10,7 @@ use super::jacdif::is_sparse;
 use super::jacobian::jac;
 use super::linalg::{add_to, add_to_scl, max, min};
 use super::{disabled, Data, EngineError, Model, JNT_BALL, JNT_FREE, MINVAL};
+use crate::abi::view::Arena;
 use crate::abi::*;
 use crate::math::blas::{mul_mat_mat, mul_mat_t_mat, transpose};
 use crate::math::*;
@@ -550,18 +551,24 @@ impl BodyJac<'_> {
 }
 
 impl<'s> BodyJac<'s> {
-    /// Workspace for bodies of `m`, from the arena (reused for every body).
-    fn new(m: &Model, d: &mut Data<'s>) -> Result<Self, EngineError> {
+    /// Workspace for bodies of `m`, from the arena (reused for every body): 2.2.2's 15 nv of
+    /// stack per body, 21 nv for the ellipsoid model (`ellipsoid`: some body uses it).
+    fn new(m: &Model, a: &mut Arena<'s>, ellipsoid: bool) -> Result<Self, EngineError> {
         let nv = m.raw.nv as usize;
-        Ok(BodyJac {
-            j: d.arena.alloc(6 * nv)?,
-            tmp: d.arena.alloc(3 * nv)?,
+        let bj = BodyJac {
+            j: a.alloc(6 * nv)?,
+            tmp: a.alloc(3 * nv)?,
             rownnz: [0; 6],
             rowadr: [0; 6],
-            colind: d.arena.alloc_int(6 * nv)?,
+            colind: a.alloc_int(6 * nv)?,
             nnz: nv,
             sparse: is_sparse(m),
-        })
+        };
+        if ellipsoid {
+            // its compressed column indices: not needed here, taken for the stack's count
+            a.alloc_int_stale(6 * nv)?;
+        }
+        Ok(bj)
     }
 
     /// Sets the row structure for `body` (sparse: its chain of dofs in every row).
@@ -688,17 +695,21 @@ pub fn passive_vel(m: &Model, d: &mut Data, dfdv: &mut [f64]) -> Result<(), Engi
         }
     }
     if m.raw.opt.viscosity > 0.0 || m.raw.opt.density > 0.0 {
-        let mut bj = BodyJac::new(m, d)?;
-        for b in 1..m.raw.nbody as usize {
-            if m.body_mass()[b] < MINVAL {
-                continue;
+        let fluid = |b: &usize| m.body_mass()[*b] >= MINVAL;
+        let ellipsoid = (1..m.raw.nbody as usize)
+            .filter(fluid)
+            .any(|b| uses_ellipsoid(m, b));
+        d.with_scratch(|d, a| -> Result<(), EngineError> {
+            let mut bj = BodyJac::new(m, a, ellipsoid)?;
+            for b in (1..m.raw.nbody as usize).filter(fluid) {
+                if uses_ellipsoid(m, b) {
+                    ellipsoid_fluid_vel(m, d, &mut bj, dfdv, b);
+                } else {
+                    inertia_box_fluid_vel(m, d, &mut bj, dfdv, b);
+                }
             }
-            if uses_ellipsoid(m, b) {
-                ellipsoid_fluid_vel(m, d, &mut bj, dfdv, b);
-            } else {
-                inertia_box_fluid_vel(m, d, &mut bj, dfdv, b);
-            }
-        }
+            Ok(())
+        })?;
     }
     Ok(())
 }
@@ -763,13 +774,17 @@ fn com_vel_vel(m: &Model, d: &Data, dcvel: &mut [f64], dcdofdot: &mut [f64]) {
 
 /// dfdv -= d qfrc_bias / d qvel.
 fn rne_vel(m: &Model, d: &mut Data, dfdv: &mut [f64]) -> Result<(), EngineError> {
+    d.with_scratch(|d, a| rne_vel_in(m, d, a, dfdv))
+}
+
+fn rne_vel_in(m: &Model, d: &mut Data, a: &mut Arena, dfdv: &mut [f64]) -> Result<(), EngineError> {
     let nv = m.raw.nv as usize;
     let nbody = m.raw.nbody as usize;
     let blk = 6 * nv;
-    let dcvel = d.arena.alloc(nbody * blk)?;
-    let dcdofdot = d.arena.alloc(nv * blk)?;
-    let dcacc = d.arena.alloc(nbody * blk)?;
-    let dcfrc = d.arena.alloc(nbody * blk)?;
+    let dcvel = a.alloc(nbody * blk)?;
+    let dcdofdot = a.alloc(nv * blk)?;
+    let dcacc = a.alloc(nbody * blk)?;
+    let dcfrc = a.alloc(nbody * blk)?;
     com_vel_vel(m, d, dcvel, dcdofdot);
     dcacc.fill(0.0);
     for i in 1..nbody {
@@ -828,6 +843,7 @@ fn rne_vel(m: &Model, d: &mut Data, dfdv: &mut [f64]) -> Result<(), EngineError>
 /// (mjd_smooth_vel).
 pub fn smooth_vel(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     let nv = m.raw.nv as usize;
+    // dfdv stays to the caller's release; the nested stages free theirs
     let dfdv = d.arena.alloc(nv * nv)?;
     actuator_vel(m, d, dfdv);
     passive_vel(m, d, dfdv)?;
@@ -1007,7 +1023,10 @@ fn clamped_state_diff(
         (None, Some(mi)) => state_diff(m, ds, mi, s, h),
         (Some(p), Some(mi)) => state_diff(m, ds, mi, p, 2.0 * h),
         (None, None) => {
+            // 2.2.2 zeroes nq+nv+na values from the row (past it when nq > nv: into the next
+            // row, which is written after, or past the last row's end): within the output here
             let n = (m.raw.nq + m.raw.nv + m.raw.na) as usize;
+            let n = n.min(ds.len());
             ds[..n].fill(0.0)
         }
     }
@@ -1063,6 +1082,20 @@ pub fn step_fd(
     let mut sensor_plus = vec![0.0; ns];
     let mut sensor_minus = vec![0.0; ns];
     let mut ctrl = vec![0.0; nu];
+    let dpos = std::cell::RefCell::new(vec![0.0; nv]);
+
+    // the buffers live on the heap; the stack counts what 2.2.2 takes for them (states,
+    // warm start, sensors, controls, and the position nudge in the position pass), so the
+    // nudged steps run at its stack depth
+    let base = 4 * nx + if use_warm { nv } else { 0 } + if skipsensor { 0 } else { 3 * ns } + nu;
+    let dpos_words = std::cell::Cell::new(0);
+    let outer = with;
+    let with = &mut |f: &mut dyn FnMut(&mut Data) -> Result<(), EngineError>| {
+        outer(&mut |d| {
+            d.arena.alloc_stale(base + dpos_words.get())?;
+            f(d)
+        })
+    };
 
     with(&mut |d| {
         ctrl.copy_from_slice(&d.ctrl[..nu]);
@@ -1160,12 +1193,15 @@ pub fn step_fd(
         if dy.is_none() && ds.is_none() {
             continue;
         }
+        if matches!(input, Input::Pos) {
+            dpos_words.set(nv);
+        }
         for i in 0..n {
             let nudge = |d: &mut Data, sgn: f64| -> Result<(), EngineError> {
                 match input {
                     Input::Act => d.act[i] += sgn * eps,
                     Input::Vel => d.qvel[i] += sgn * eps,
-                    Input::Pos => pos_nudge(m, d, i, sgn * eps)?,
+                    Input::Pos => pos_nudge(m, d, &mut dpos.borrow_mut(), i, sgn * eps),
                 }
                 Ok(())
             };
@@ -1205,11 +1241,10 @@ pub fn step_fd(
 }
 
 /// qpos moved by `h` along dof `i` (a unit velocity integrated over h).
-fn pos_nudge(m: &Model, d: &mut Data, i: usize, h: f64) -> Result<(), EngineError> {
-    let dpos = d.arena.alloc(m.raw.nv as usize)?;
+fn pos_nudge(m: &Model, d: &mut Data, dpos: &mut [f64], i: usize, h: f64) {
+    dpos.fill(0.0);
     dpos[i] = 1.0;
     integrate_pos(m, d.qpos, dpos, h);
-    Ok(())
 }
 
 /// Transition matrices A, B, C, D of mj_step by finite differences (mjd_transitionFD).
@@ -1231,6 +1266,15 @@ pub fn transition_fd(
     let mut bt = vec![0.0; if b.is_some() { nu * ndx } else { 0 }];
     let mut ct = vec![0.0; if c.is_some() { ndx * ns } else { 0 }];
     let mut dt = vec![0.0; if dm.is_some() { nu * ns } else { 0 }];
+    // the stack counts the transposed matrices as 2.2.2 takes them there
+    let words = at.len() + bt.len() + ct.len() + dt.len();
+    let outer = with;
+    let with = &mut |f: &mut dyn FnMut(&mut Data) -> Result<(), EngineError>| {
+        outer(&mut |d| {
+            d.arena.alloc_stale(words)?;
+            f(d)
+        })
+    };
     let mut out = StepFd::default();
     if a.is_some() {
         let (q, rest) = at.split_at_mut(ndx * nv);

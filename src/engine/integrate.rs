@@ -7,6 +7,7 @@ use super::inertia::{factor_i, solve_ld};
 use super::linalg::{add_to_scl, clip};
 use super::{Data, EngineError, Model, JNT_BALL, JNT_FREE, JNT_HINGE, JNT_SLIDE};
 use crate::abi::mjtStage_;
+use crate::abi::view::ints_of;
 use crate::math::chol_sparse::{factor_lu_sparse, solve_lu_sparse};
 use crate::math::*;
 
@@ -57,12 +58,13 @@ pub fn differentiate_pos(m: &Model, qvel: &mut [f64], dt: f64, qpos1: &[f64], qp
     }
 }
 
-/// Advances act, qvel, qpos and time (qpos with `qvel` when given, else the new d.qvel).
-fn advance(m: &Model, d: &mut Data, act_dot: &[f64], qacc: &[f64], qvel: Option<&[f64]>) {
+/// Advances act, qvel, qpos and time (act with `act_dot` when given, else d.act_dot; qpos with
+/// `qvel` when given, else the new d.qvel).
+fn advance(m: &Model, d: &mut Data, act_dot: Option<&[f64]>, qacc: &[f64], qvel: Option<&[f64]>) {
     let h = m.raw.opt.timestep;
     let (nu, na) = (m.raw.nu as usize, m.raw.na as usize);
     if na > 0 {
-        add_to_scl(d.act, act_dot, h);
+        add_to_scl(d.act, act_dot.unwrap_or(d.act_dot), h);
         for i in 0..na {
             let iu = i + nu - na;
             if m.actuator_actlimited()[iu] != 0 {
@@ -86,6 +88,8 @@ fn advance(m: &Model, d: &mut Data, act_dot: &[f64], qacc: &[f64], qvel: Option<
 pub fn euler(m: &Model, d: &mut Data, skipfactor: bool) -> Result<(), EngineError> {
     let nv = m.raw.nv as usize;
     let nm = m.raw.nM as usize;
+    // 2.2.2's scratch: qfrc and qacc, and M + h*B when it factors
+    let qfrc = d.arena.alloc_stale(nv)?;
     let qacc = d.arena.alloc_stale(nv)?;
     if !m.dof_damping().iter().any(|&b| b > 0.0) {
         qacc.copy_from_slice(d.qacc);
@@ -100,13 +104,12 @@ pub fn euler(m: &Model, d: &mut Data, skipfactor: bool) -> Result<(), EngineErro
             factor_i(m, d.raw, mhb, d.qH, d.qHDiagInv, None)?;
         }
         for i in 0..nv {
-            qacc[i] = d.qfrc_smooth[i] + d.qfrc_constraint[i];
+            qfrc[i] = d.qfrc_smooth[i] + d.qfrc_constraint[i];
         }
+        qacc.copy_from_slice(qfrc);
         solve_ld(m, qacc, None, 1, d.qH, d.qHDiagInv);
     }
-    let act_dot = d.arena.alloc_stale(d.act_dot.len())?;
-    act_dot.copy_from_slice(d.act_dot);
-    advance(m, d, act_dot, qacc, None);
+    advance(m, d, None, qacc, None);
     Ok(())
 }
 
@@ -187,7 +190,7 @@ pub fn runge_kutta(m: &Model, d: &mut Data, n: usize) -> Result<(), EngineError>
 
     let (vel, rest) = dx.split_at(nv);
     let (acc, act_dot) = rest.split_at(nv);
-    advance(m, d, act_dot, acc, Some(vel));
+    advance(m, d, Some(act_dot), acc, Some(vel));
     Ok(())
 }
 
@@ -279,12 +282,20 @@ pub fn implicit(m: &Model, d: &mut Data, skipfactor: bool) -> Result<(), EngineE
     let qfrc = d.arena.alloc(nv)?;
     let qacc = d.arena.alloc(nv)?;
     if !skipfactor {
-        let scratch = d.arena.alloc_int(nv)?;
-        make_m_sparse(m, d.D_rownnz, d.D_rowadr, d.D_colind, scratch)?;
+        // mj_makeMSparse and mj_setMSparse take their nv ints for the call; the factorization
+        // uses qacc as its int scratch (as 2.2.2)
+        d.arena.scope(|a| -> Result<(), EngineError> {
+            let scratch = a.alloc_int(nv)?;
+            make_m_sparse(m, d.D_rownnz, d.D_rowadr, d.D_colind, scratch)
+        })?;
         smooth_vel(m, d)?;
-        set_m_sparse(m, d.qM, d.qLU, d.D_rownnz, d.D_rowadr, scratch);
+        d.arena.scope(|a| -> Result<(), EngineError> {
+            let scratch = a.alloc_int(nv)?;
+            set_m_sparse(m, d.qM, d.qLU, d.D_rownnz, d.D_rowadr, scratch);
+            Ok(())
+        })?;
         add_to_scl(&mut d.qLU[..nd], &d.qDeriv[..nd], -m.raw.opt.timestep);
-        factor_lu_sparse(d.qLU, nv, scratch, d.D_rownnz, d.D_rowadr, d.D_colind)
+        factor_lu_sparse(d.qLU, nv, ints_of(qacc), d.D_rownnz, d.D_rowadr, d.D_colind)
             .map_err(|e| EngineError(e.into()))?;
     }
     for i in 0..nv {
@@ -292,8 +303,6 @@ pub fn implicit(m: &Model, d: &mut Data, skipfactor: bool) -> Result<(), EngineE
     }
     solve_lu_sparse(qacc, d.qLU, qfrc, nv, d.D_rownnz, d.D_rowadr, d.D_colind)
         .map_err(|e| EngineError(e.into()))?;
-    let act_dot = d.arena.alloc_stale(d.act_dot.len())?;
-    act_dot.copy_from_slice(d.act_dot);
-    advance(m, d, act_dot, qacc, None);
+    advance(m, d, None, qacc, None);
     Ok(())
 }

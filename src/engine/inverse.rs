@@ -108,7 +108,11 @@ pub fn compare_fwd_inv(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     if nefc == 0 {
         return Ok(());
     }
-    // scratch for the rest of this view's life (the forward results must survive the inverse)
+    d.scoped(|d| compare_scoped(m, d, nv, nefc))
+}
+
+fn compare_scoped(m: &Model, d: &mut Data, nv: usize, nefc: usize) -> Result<(), EngineError> {
+    // scratch to the end of the comparison (the forward results must survive the inverse)
     let qforce = d.arena.alloc(nv)?;
     let dif = d.arena.alloc(nv)?;
     let save_constraint = d.arena.alloc(nv)?;

@@ -302,6 +302,8 @@ pub fn add_m_sparse_with(
         let mat = a.alloc_stale(nv * nv)?;
         let mcol = a.alloc_int_stale(nv * nv)?;
         let mnnz = a.alloc_int(nv)?;
+        // 2.2.2 also takes nv ints for the rows' addresses, which are i*nv here
+        a.alloc_int_stale(nv)?;
         let buf = a.alloc(nv)?;
         let buf_ind = a.alloc_int(nv)?;
         // lower triangle of M, rows in ascending column order

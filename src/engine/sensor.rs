@@ -198,7 +198,7 @@ pub fn sensor_vel(m: &Model, d: &mut Data) -> Result<(), EngineError> {
         if !have_subtree
             && (is(ty, mjSENS_SUBTREELINVEL) || is(ty, mjSENS_SUBTREEANGMOM) || is(ty, mjSENS_USER))
         {
-            subtree_vel(m, d);
+            subtree_vel(m, d)?;
             have_subtree = true;
         }
         if is(ty, mjSENS_VELOCIMETER) || is(ty, mjSENS_GYRO) {

@@ -39,9 +39,37 @@ pub struct Consts {
     pub stat: mjStatistic,
 }
 
-/// set0, setStat and setSpring of mj_setConst, run in `d`.
+/// set0, setStat and setSpring of mj_setConst, run in `d`; each of set0 and setStat releases
+/// its stack scratch, as in 2.2.2.
 pub fn compute(m: &Model, d: &mut Data) -> Result<Consts, EngineError> {
+    let nbody = m.raw.nbody as usize;
+    let mut c = d.scoped(|d| set0(m, d))?;
+    c.stat = d.scoped(|d| -> Result<mjStatistic, EngineError> {
+        let body = d.arena.alloc(nbody)?;
+        Ok(set_stat(m, d, body))
+    })?;
+
+    // setSpring: leave d in qpos_spring, as 2.2.2 does
+    d.qpos.copy_from_slice(m.qpos_spring());
+    kinematics(m, d)?;
+    com_pos(m, d)?;
+    tendon(m, d)?;
+    transmission(m, d)?;
+    c.tendon_lengthspring = (m.tendon_lengthspring().iter().zip(d.ten_length.iter()))
+        .map(|(&s, &l)| if s < 0.0 { l } else { s })
+        .collect();
+    Ok(c)
+}
+
+/// set0: the constants at qpos0. Its scratch comes first on the stack (Jacobian and solve
+/// buffers, and 2.2.2's saved camera and light modes), the stages run above it. The
+/// statistics and the spring lengths are left to the caller.
+fn set0(m: &Model, d: &mut Data) -> Result<Consts, EngineError> {
     let (nv, nbody, nu) = (m.raw.nv as usize, m.raw.nbody as usize, m.raw.nu as usize);
+    let jacm = d.arena.alloc(6 * nv)?;
+    let tmp = d.arena.alloc(6 * nv)?;
+    d.arena.alloc_int_stale(m.raw.ncam.max(0) as usize)?;
+    d.arena.alloc_int_stale(m.raw.nlight.max(0) as usize)?;
     d.qpos.copy_from_slice(m.qpos0());
     kinematics(m, d)?;
     com_pos(m, d)?;
@@ -54,8 +82,6 @@ pub fn compute(m: &Model, d: &mut Data) -> Result<Consts, EngineError> {
     let actuator_length0 = d.actuator_length.to_vec();
     let tendon_length0 = d.ten_length.to_vec();
 
-    let jacm = d.arena.alloc(6 * nv)?;
-    let tmp = d.arena.alloc(6 * nv)?;
     let mut a = [0.0; 36];
     let mut body_invweight0 = vec![0.0; 2 * nbody];
     for i in 1..nbody {
@@ -149,32 +175,25 @@ pub fn compute(m: &Model, d: &mut Data) -> Result<Consts, EngineError> {
         ));
     }
 
-    let body = d.arena.alloc(nbody)?;
-    let stat = set_stat(m, d, body);
-
-    // setSpring: leave d in qpos_spring, as 2.2.2 does
-    d.qpos.copy_from_slice(m.qpos_spring());
-    kinematics(m, d)?;
-    com_pos(m, d)?;
-    tendon(m, d)?;
-    transmission(m, d)?;
-    let tendon_lengthspring = (m.tendon_lengthspring().iter().zip(d.ten_length.iter()))
-        .map(|(&s, &l)| if s < 0.0 { l } else { s })
-        .collect();
-
     Ok(Consts {
         dof_m0,
         actuator_length0,
         tendon_length0,
         tendon_invweight0,
-        tendon_lengthspring,
         body_invweight0,
         dof_invweight0,
         actuator_acc0,
         eq_data,
         cam,
         light,
-        stat,
+        tendon_lengthspring: Vec::new(),
+        stat: mjStatistic {
+            meaninertia: 0.0,
+            meanmass: 0.0,
+            meansize: 0.0,
+            extent: 0.0,
+            center: [0.0; 3],
+        },
     })
 }
 

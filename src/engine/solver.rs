@@ -387,17 +387,11 @@ struct Ctx<'b> {
     newton: bool,
     h: &'b mut [f64],
     hcone: &'b mut [f64],
-    hdiag: &'b mut [f64],
-    hvec: &'b mut [f64],
     sparse: bool,
     nnz: usize,
     rownnz: &'b mut [i32],
     rowadr: &'b mut [i32],
     colind: &'b mut [i32],
-    vec_ind: &'b mut [i32],
-    buf: &'b mut [f64],
-    buf_ind: &'b mut [i32],
-    chain: &'b mut [i32],
     cost: f64,
     quad_gauss: [f64; 3],
     nactive: i32,
@@ -697,62 +691,75 @@ fn search(m: &Model, d: &mut Data, c: &mut Ctx) -> f64 {
     }
 }
 
-/// H = M + J'*D*J over quadratic rows, Cholesky-factorized (HessianDirect).
+/// H = M + J'*D*J over quadratic rows, Cholesky-factorized (HessianDirect). Scratch as
+/// 2.2.2's: D (nefc) for the factorization, each sparse step's own above it; the cone update
+/// after D is released.
 fn hessian_direct(m: &Model, d: &mut Data, a: &mut Arena, c: &mut Ctx) -> Result<(), EngineError> {
     let nv = m.raw.nv as usize;
     let nefc = d.raw.nefc as usize;
-    for i in 0..nefc {
-        c.hdiag[i] = if d.efc_state[i] == QUADRATIC {
-            d.efc_D[i]
-        } else {
-            0.0
-        };
-    }
-    if c.sparse {
-        let pat = SparseRef {
-            rownnz: d.efc_J_rownnz,
-            rowadr: d.efc_J_rowadr,
-            colind: d.efc_J_colind,
-            rowsuper: Some(d.efc_J_rowsuper),
-        };
-        let pat_t = SparseRef {
-            rownnz: d.efc_JT_rownnz,
-            rowadr: d.efc_JT_rowadr,
-            colind: d.efc_JT_colind,
-            rowsuper: Some(d.efc_JT_rowsuper),
-        };
-        sqr_mat_td_sparse(
-            c.h,
-            d.efc_J,
-            d.efc_JT,
-            Some(c.hdiag),
-            nv,
-            c.rownnz,
-            c.rowadr,
-            c.colind,
-            &pat,
-            &pat_t,
-            c.chain,
-            c.buf,
-        );
-        add_m_sparse_with(m, d.qM, a, c.h, c.rownnz, c.rowadr, c.colind)?;
-        let rank = chol_factor_sparse(
-            c.h, nv, MINVAL, c.rownnz, c.rowadr, c.colind, c.buf, c.buf_ind,
-        )
-        .map_err(|e| EngineError(e.into()))?;
-        if rank != nv {
-            return Err(EngineError(
-                "Rank-defficient Hessian in HessianDirect".into(),
-            ));
+    a.scope(|a| -> Result<(), EngineError> {
+        let hdiag = a.alloc_stale(nefc)?;
+        for i in 0..nefc {
+            hdiag[i] = if d.efc_state[i] == QUADRATIC {
+                d.efc_D[i]
+            } else {
+                0.0
+            };
         }
-        compress_sparse(c.h, nv, c.rownnz, c.rowadr, c.colind);
-        c.nnz = c.rownnz[..nv].iter().sum::<i32>() as usize;
-    } else {
-        sqr_mat_td(c.h, d.efc_J, Some(c.hdiag), nefc, nv);
-        add_m_dense(m, d.qM, c.h);
-        chol_factor(c.h, nv, MINVAL);
-        c.nnz = nv * nv;
-    }
+        if c.sparse {
+            let pat = SparseRef {
+                rownnz: d.efc_J_rownnz,
+                rowadr: d.efc_J_rowadr,
+                colind: d.efc_J_colind,
+                rowsuper: Some(d.efc_J_rowsuper),
+            };
+            let pat_t = SparseRef {
+                rownnz: d.efc_JT_rownnz,
+                rowadr: d.efc_JT_rowadr,
+                colind: d.efc_JT_colind,
+                rowsuper: Some(d.efc_JT_rowsuper),
+            };
+            a.scope(|a| -> Result<(), EngineError> {
+                let chain = a.alloc_int_stale(2 * nv)?;
+                let buf = a.alloc_stale(nv)?;
+                sqr_mat_td_sparse(
+                    c.h,
+                    d.efc_J,
+                    d.efc_JT,
+                    Some(hdiag),
+                    nv,
+                    c.rownnz,
+                    c.rowadr,
+                    c.colind,
+                    &pat,
+                    &pat_t,
+                    chain,
+                    buf,
+                );
+                Ok(())
+            })?;
+            add_m_sparse_with(m, d.qM, a, c.h, c.rownnz, c.rowadr, c.colind)?;
+            let rank = a.scope(|a| -> Result<usize, EngineError> {
+                let buf_ind = a.alloc_int_stale(nv)?;
+                let buf = a.alloc_stale(nv)?;
+                chol_factor_sparse(c.h, nv, MINVAL, c.rownnz, c.rowadr, c.colind, buf, buf_ind)
+                    .map_err(|e| EngineError(e.into()))
+            })?;
+            if rank != nv {
+                return Err(EngineError(
+                    "Rank-defficient Hessian in HessianDirect".into(),
+                ));
+            }
+            compress_sparse(c.h, nv, c.rownnz, c.rowadr, c.colind);
+            c.nnz = c.rownnz[..nv].iter().sum::<i32>() as usize;
+        } else {
+            sqr_mat_td(c.h, d.efc_J, Some(hdiag), nefc, nv);
+            add_m_dense(m, d.qM, c.h);
+            chol_factor(c.h, nv, MINVAL);
+            c.nnz = nv * nv;
+        }
+        Ok(())
+    })?;
     if c.ncone > 0 {
         hessian_cone(m, d, a, c)?;
     }
@@ -770,6 +777,12 @@ fn hessian_cone(m: &Model, d: &mut Data, a: &mut Arena, c: &mut Ctx) -> Result<(
         let ltj = a.alloc(6 * nv)?;
         let row = a.alloc(nv)?;
         let ind = a.alloc_int(nv)?;
+        // the sparse update's own scratch (mju_cholUpdateSparse takes it per call)
+        let (buf_ind, buf): (&mut [i32], &mut [f64]) = if c.sparse {
+            (a.alloc_int_stale(nv)?, a.alloc_stale(nv)?)
+        } else {
+            (&mut [], &mut [])
+        };
         let mut i = 0;
         while i < nefc {
             if d.efc_state[i] != CONE {
@@ -804,8 +817,7 @@ fn hessian_cone(m: &Model, d: &mut Data, a: &mut Arena, c: &mut Ctx) -> Result<(
                     let adr = d.efc_J_rowadr[i + r] as usize;
                     ind[..n].copy_from_slice(&d.efc_J_colind[adr..adr + n]);
                     chol_update_sparse(
-                        c.hcone, row, nv, true, c.rownnz, c.rowadr, c.colind, n, ind, c.buf,
-                        c.buf_ind,
+                        c.hcone, row, nv, true, c.rownnz, c.rowadr, c.colind, n, ind, buf, buf_ind,
                     )
                     .map_err(|e| EngineError(e.into()))?;
                 } else {
@@ -820,6 +832,7 @@ fn hessian_cone(m: &Model, d: &mut Data, a: &mut Arena, c: &mut Ctx) -> Result<(
 }
 
 /// Rank-one updates of the factor for rows whose quadratic state changed (HessianIncremental).
+/// A rank loss releases the scratch and refactors.
 fn hessian_incremental(
     m: &Model,
     d: &mut Data,
@@ -830,35 +843,59 @@ fn hessian_incremental(
     let nv = m.raw.nv as usize;
     let nefc = d.raw.nefc as usize;
     c.nupdate = 0;
-    for i in 0..nefc {
-        let (was, is) = (oldstate[i] == QUADRATIC, d.efc_state[i] == QUADRATIC);
-        if was == is {
-            continue;
-        }
-        let s = d.efc_D[i].sqrt();
-        let rank = if c.sparse {
-            let (n, adr) = (d.efc_J_rownnz[i] as usize, d.efc_J_rowadr[i] as usize);
-            for k in 0..n {
-                c.hvec[k] = d.efc_J[adr + k] * s;
+    let refactor = a.scope(|a| -> Result<bool, EngineError> {
+        let hvec = a.alloc_stale(nv)?;
+        let vec_ind = a.alloc_int_stale(nv)?;
+        let lost = a.scope(|a| -> Result<bool, EngineError> {
+            // the sparse update's own scratch (2.2.2 takes it in each update, so only once a
+            // row changes), released before the cone update
+            let mut scratch: Option<(&mut [i32], &mut [f64])> = None;
+            for i in 0..nefc {
+                let (was, is) = (oldstate[i] == QUADRATIC, d.efc_state[i] == QUADRATIC);
+                if was == is {
+                    continue;
+                }
+                let s = d.efc_D[i].sqrt();
+                let rank = if c.sparse {
+                    let (n, adr) = (d.efc_J_rownnz[i] as usize, d.efc_J_rowadr[i] as usize);
+                    for k in 0..n {
+                        hvec[k] = d.efc_J[adr + k] * s;
+                    }
+                    vec_ind[..n].copy_from_slice(&d.efc_J_colind[adr..adr + n]);
+                    if scratch.is_none() {
+                        scratch = Some((a.alloc_int_stale(nv)?, a.alloc_stale(nv)?));
+                    }
+                    let Some((buf_ind, buf)) = scratch.as_mut() else {
+                        unreachable!()
+                    };
+                    chol_update_sparse(
+                        c.h, hvec, nv, is, c.rownnz, c.rowadr, c.colind, n, vec_ind, buf, buf_ind,
+                    )
+                    .map_err(|e| EngineError(e.into()))?
+                } else {
+                    for k in 0..nv {
+                        hvec[k] = d.efc_J[i * nv + k] * s;
+                    }
+                    chol_update(c.h, hvec, nv, is)
+                };
+                c.nupdate += 1;
+                if rank < nv {
+                    return Ok(true);
+                }
             }
-            c.vec_ind[..n].copy_from_slice(&d.efc_J_colind[adr..adr + n]);
-            chol_update_sparse(
-                c.h, c.hvec, nv, is, c.rownnz, c.rowadr, c.colind, n, c.vec_ind, c.buf, c.buf_ind,
-            )
-            .map_err(|e| EngineError(e.into()))?
-        } else {
-            for k in 0..nv {
-                c.hvec[k] = d.efc_J[i * nv + k] * s;
-            }
-            chol_update(c.h, c.hvec, nv, is)
-        };
-        c.nupdate += 1;
-        if rank < nv {
-            return hessian_direct(m, d, a, c);
+            Ok(false)
+        })?;
+        if lost {
+            return Ok(true);
         }
-    }
-    if c.ncone > 0 {
-        hessian_cone(m, d, a, c)?;
+        // the cone update runs above vec and vec_ind, as in 2.2.2
+        if c.ncone > 0 {
+            hessian_cone(m, d, a, c)?;
+        }
+        Ok(false)
+    })?;
+    if refactor {
+        return hessian_direct(m, d, a, c);
     }
     Ok(())
 }
@@ -886,17 +923,11 @@ fn cg_newton(
         newton,
         h: a.alloc_stale(hn)?,
         hcone: a.alloc_stale(hn)?,
-        hdiag: a.alloc_stale(if newton { nefc } else { 0 })?,
-        hvec: a.alloc_stale(if newton { nv } else { 0 })?,
         sparse: is_sparse(m),
         nnz: 0,
         rownnz: a.alloc_int_stale(if newton { nv } else { 0 })?,
         rowadr: a.alloc_int_stale(if newton { nv } else { 0 })?,
         colind: a.alloc_int_stale(hn)?,
-        vec_ind: a.alloc_int_stale(if newton { nv } else { 0 })?,
-        buf: a.alloc_stale(if newton { nv } else { 0 })?,
-        buf_ind: a.alloc_int_stale(if newton { nv } else { 0 })?,
-        chain: a.alloc_int_stale(if newton { 2 * nv } else { 0 })?,
         cost: 0.0,
         quad_gauss: [0.0; 3],
         nactive: 0,
@@ -905,8 +936,11 @@ fn cg_newton(
         ls_iter: 0,
         ls_slope: 1.0,
     };
-    let gradold = a.alloc_stale(nv)?;
-    let mgradold = a.alloc_stale(nv)?;
+    // CG's previous gradients (2.2.2 also takes nv for their difference)
+    let ncg = if newton { 0 } else { nv };
+    let gradold = a.alloc_stale(ncg)?;
+    let mgradold = a.alloc_stale(ncg)?;
+    a.alloc_stale(ncg)?;
     let oldstate = a.alloc_int_stale(nefc)?;
 
     mul_m(m, d.qM, c.ma, d.qacc);

@@ -119,6 +119,7 @@ pub fn reset_data(m: &Model, d: &mut Data) {
 
 /// Clears the header: stack use, diagnostics, sizes, time, energy.
 pub fn clear_header(d: &mut Data) {
+    d.arena.reset_peak();
     let r = &mut *d.raw;
     r.pstack = 0;
     r.maxuse_stack = 0;

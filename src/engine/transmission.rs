@@ -4,6 +4,7 @@
 use super::jacdif::{is_sparse, jac_dif_pair};
 use super::jacobian::jac;
 use super::{Data, EngineError, Model, JNT_BALL, JNT_HINGE, JNT_SLIDE};
+use crate::abi::view::Arena;
 use crate::abi::{mjtCone_, mjtTrn_};
 use crate::math::blas::{add_to, mul_mat_mat, mul_mat_t_vec, scl, scl_in_place, sub_from};
 use crate::math::misc::is_zero;
@@ -16,12 +17,28 @@ const TRN_TENDON: i32 = mjtTrn_::mjTRN_TENDON as i32;
 const TRN_SITE: i32 = mjtTrn_::mjTRN_SITE as i32;
 const TRN_BODY: i32 = mjtTrn_::mjTRN_BODY as i32;
 
-/// Scratch for the Jacobian-based transmissions, 3 x nv each.
+/// Scratch of mj_transmission, taken from the stack as 2.2.2 takes it: three 3 x nv Jacobians
+/// for the whole call, then, kept to the end once taken, the reference-site Jacobian and the
+/// rotational moment (site transmissions with a reference site) and the body-transmission
+/// buffers.
 struct Scratch<'s> {
     jac: &'s mut [f64],
     jac_a: &'s mut [f64],
     jac_s: &'s mut [f64],
-    jac_ref: &'s mut [f64],
+    jac_ref: Option<&'s mut [f64]>,
+    moment_tmp: Option<&'s mut [f64]>,
+    body: Option<BodyScratch<'s>>,
+}
+
+/// The body transmission's buffers: contact markers over the rows, the moment of excluded
+/// contacts, the Jacobian difference and the two Jacobians (3 x nv), the sparse chain.
+struct BodyScratch<'s> {
+    efc_force: &'s mut [f64],
+    exclude: &'s mut [f64],
+    jacdif: &'s mut [f64],
+    jac1: &'s mut [f64],
+    jac2: &'s mut [f64],
+    chain: &'s mut [i32],
 }
 
 /// The kinematic quantities the Jacobian-based transmissions read.
@@ -40,43 +57,53 @@ pub fn transmission(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     if nu == 0 {
         return Ok(());
     }
-    d.actuator_moment.fill(0.0);
-    for i in 0..nu {
-        let t = m.actuator_trntype()[i];
-        match t {
-            TRN_JOINT | TRN_JOINTINPARENT => joint(m, d, i),
-            TRN_TENDON => tendon(m, d, i),
-            TRN_BODY => body(m, d, i)?,
-            TRN_SLIDERCRANK | TRN_SITE => d.arena.scope(|a| -> Result<(), EngineError> {
-                let mut s = Scratch {
-                    jac: a.alloc(3 * nv)?,
-                    jac_a: a.alloc(3 * nv)?,
-                    jac_s: a.alloc(3 * nv)?,
-                    jac_ref: a.alloc(3 * nv)?,
-                };
-                let k = Kin {
-                    site_xpos: d.site_xpos,
-                    site_xmat: d.site_xmat,
-                    xquat: d.xquat,
-                    cdof: d.cdof,
-                    subtree_com: d.subtree_com,
-                };
-                let moment = &mut d.actuator_moment[i * nv..(i + 1) * nv];
-                d.actuator_length[i] = if t == TRN_SITE {
-                    site(m, &k, &mut s, i, moment)
-                } else {
-                    slider_crank(m, &k, &mut s, i, moment)
-                };
-                Ok(())
-            })?,
-            _ => return Err(EngineError(format!("Unknown transmission type {t}"))),
+    super::constraint::with_arena(d, |d, a| -> Result<(), EngineError> {
+        let mut s = Scratch {
+            jac: a.alloc(3 * nv)?,
+            jac_a: a.alloc(3 * nv)?,
+            jac_s: a.alloc(3 * nv)?,
+            jac_ref: None,
+            moment_tmp: None,
+            body: None,
+        };
+        d.actuator_moment.fill(0.0);
+        for i in 0..nu {
+            let t = m.actuator_trntype()[i];
+            match t {
+                TRN_JOINT | TRN_JOINTINPARENT => joint(m, d, i),
+                TRN_TENDON => tendon(m, d, i),
+                TRN_BODY => body(m, d, a, &mut s, i)?,
+                TRN_SLIDERCRANK | TRN_SITE => {
+                    let k = Kin {
+                        site_xpos: d.site_xpos,
+                        site_xmat: d.site_xmat,
+                        xquat: d.xquat,
+                        cdof: d.cdof,
+                        subtree_com: d.subtree_com,
+                    };
+                    let moment = &mut d.actuator_moment[i * nv..(i + 1) * nv];
+                    d.actuator_length[i] = if t == TRN_SITE {
+                        site(m, &k, a, &mut s, i, moment)?
+                    } else {
+                        slider_crank(m, &k, a, &mut s, i, moment)?
+                    };
+                }
+                _ => return Err(EngineError(format!("Unknown transmission type {t}"))),
+            }
         }
-    }
-    Ok(())
+        Ok(())
+    })
 }
 
 /// Slider-crank: length of the slider along its axis, with its derivatives; returns length.
-fn slider_crank(m: &Model, k: &Kin, s: &mut Scratch, i: usize, moment: &mut [f64]) -> f64 {
+fn slider_crank(
+    m: &Model,
+    k: &Kin,
+    a: &mut Arena,
+    s: &mut Scratch,
+    i: usize,
+    moment: &mut [f64],
+) -> Result<f64, EngineError> {
     let nv = m.raw.nv as usize;
     let id = m.actuator_trnid()[2 * i] as usize;
     let ids = m.actuator_trnid()[2 * i + 1] as usize;
@@ -99,7 +126,12 @@ fn slider_crank(m: &Model, k: &Kin, s: &mut Scratch, i: usize, moment: &mut [f64
     };
 
     // Jacobians of the slider axis (jac_a) and of vec (jac)
-    point_axis(m, k, s, &spos, &axis, m.site_bodyid()[ids] as usize);
+    // mj_jacPointAxis takes its rotation Jacobian from the stack for the call
+    a.scope(|a| -> Result<(), EngineError> {
+        let jacr = a.alloc(3 * nv)?;
+        point_axis(m, k, s, jacr, &spos, &axis, m.site_bodyid()[ids] as usize);
+        Ok(())
+    })?;
     let pos = v3(&k.site_xpos[3 * id..]);
     jac(
         m,
@@ -120,13 +152,20 @@ fn slider_crank(m: &Model, k: &Kin, s: &mut Scratch, i: usize, moment: &mut [f64
     for v in moment.iter_mut() {
         *v *= gear;
     }
-    length * gear
+    Ok(length * gear)
 }
 
 /// Point Jacobian into `s.jac_s` and the axis Jacobian into `s.jac_a` (mj_jacPointAxis).
-fn point_axis(m: &Model, k: &Kin, s: &mut Scratch, point: &Vec3, axis: &Vec3, body: usize) {
+fn point_axis(
+    m: &Model,
+    k: &Kin,
+    s: &mut Scratch,
+    jacr: &mut [f64],
+    point: &Vec3,
+    axis: &Vec3,
+    body: usize,
+) {
     let nv = m.raw.nv as usize;
-    let jacr = &mut *s.jac_ref;
     jac(
         m,
         k.cdof,
@@ -163,7 +202,14 @@ fn tendon(m: &Model, d: &mut Data, i: usize) {
 
 /// Site transmission: wrench gear in the site frame, or the site's pose relative to a
 /// reference site; returns the length.
-fn site(m: &Model, k: &Kin, s: &mut Scratch, i: usize, moment: &mut [f64]) -> f64 {
+fn site<'s>(
+    m: &Model,
+    k: &Kin,
+    a: &mut Arena<'s>,
+    s: &mut Scratch<'s>,
+    i: usize,
+    moment: &mut [f64],
+) -> Result<f64, EngineError> {
     let nv = m.raw.nv as usize;
     let id = m.actuator_trnid()[2 * i] as usize;
     let refid = m.actuator_trnid()[2 * i + 1];
@@ -189,10 +235,13 @@ fn site(m: &Model, k: &Kin, s: &mut Scratch, i: usize, moment: &mut [f64]) -> f6
         mul_mat_t_vec(moment, s.jac, &wt, 3, nv);
         mul_mat_t_vec(s.jac, s.jac_s, &wr, 3, nv);
         add_to(moment, &s.jac[..nv]);
-        return 0.0;
+        return Ok(0.0);
     }
 
     let refid = refid as usize;
+    if s.jac_ref.is_none() {
+        s.jac_ref = Some(a.alloc(3 * nv)?);
+    }
     let rmat = xmat(refid);
     let mut length = 0.0;
     if !is_zero(&gt) {
@@ -204,10 +253,10 @@ fn site(m: &Model, k: &Kin, s: &mut Scratch, i: usize, moment: &mut [f64]) -> f6
             com,
             &pos(refid),
             body(refid),
-            Some(&mut *s.jac_ref),
+            s.jac_ref.as_deref_mut(),
             None,
         );
-        sub_from(s.jac, s.jac_ref);
+        sub_from(s.jac, s.jac_ref.as_deref().unwrap_or(&[]));
         mul_mat_t_vec(moment, s.jac, &mul_mat_vec3(&rmat, &gt), 3, nv);
     }
     if !is_zero(&gr) {
@@ -224,89 +273,109 @@ fn site(m: &Model, k: &Kin, s: &mut Scratch, i: usize, moment: &mut [f64]) -> f6
             &pos(refid),
             body(refid),
             None,
-            Some(&mut *s.jac_ref),
+            s.jac_ref.as_deref_mut(),
         );
-        sub_from(s.jac_s, s.jac_ref);
-        let tmp = &mut s.jac_a[..nv];
+        sub_from(s.jac_s, s.jac_ref.as_deref().unwrap_or(&[]));
+        if s.moment_tmp.is_none() {
+            s.moment_tmp = Some(a.alloc(nv)?);
+        }
+        let tmp = s.moment_tmp.as_deref_mut().unwrap_or(&mut []);
         mul_mat_t_vec(tmp, s.jac_s, &mul_mat_vec3(&rmat, &gr), 3, nv);
         add_to(moment, tmp);
     }
-    length
+    Ok(length)
 }
 
 /// Body (adhesion) transmission: the moment is minus the average of the normal Jacobians of
 /// the body's contacts (active contacts through efc_J, contacts in the margin gap directly).
-fn body(m: &Model, d: &mut Data, i: usize) -> Result<(), EngineError> {
+fn body<'s>(
+    m: &Model,
+    d: &mut Data,
+    a: &mut Arena<'s>,
+    s: &mut Scratch<'s>,
+    i: usize,
+) -> Result<(), EngineError> {
     let id = m.actuator_trnid()[2 * i];
     let nv = m.raw.nv as usize;
     let nefc = d.raw.nefc.max(0) as usize;
     let ncon = d.raw.ncon.max(0) as usize;
     let elliptic = m.raw.opt.cone == mjtCone_::mjCONE_ELLIPTIC as i32;
+    let sparse = is_sparse(m);
     d.actuator_length[i] = 0.0;
-    d.arena.scope(|a| -> Result<(), EngineError> {
-        let efc_force = a.alloc(nefc)?;
-        let exclude = a.alloc(nv)?;
-        let jacdif = a.alloc(3 * nv)?;
-        let jac1 = a.alloc(3 * nv)?;
-        let jac2 = a.alloc(3 * nv)?;
-        let normal = a.alloc(nv)?;
-        let chain = a.alloc_int(nv)?;
-        efc_force.fill(0.0);
-        exclude.fill(0.0);
-        let mut counter = 0;
-        for c in d.contact.iter().take(ncon) {
-            let b1 = m.geom_bodyid()[c.geom1 as usize];
-            let b2 = m.geom_bodyid()[c.geom2 as usize];
-            if b1 != id && b2 != id {
-                continue;
-            }
-            if c.exclude == 0 {
-                counter += 1;
-                let adr = c.efc_address.max(0) as usize;
-                if c.dim == 1 || elliptic {
-                    if let Some(f) = efc_force.get_mut(adr) {
-                        *f = 1.0;
-                    }
-                } else {
-                    let npyramid = (c.dim - 1) as usize;
-                    for f in efc_force.iter_mut().skip(adr).take(2 * npyramid) {
-                        *f = 0.5 / npyramid as f64;
-                    }
+    // 2.2.2 keeps the first body transmission's buffers for the next ones, marked by the rows'
+    // buffer, which it does not get without rows (an empty allocation): then every body
+    // transmission takes new ones
+    if s.body.is_none() || nefc == 0 {
+        s.body = Some(BodyScratch {
+            efc_force: a.alloc(nefc)?,
+            exclude: a.alloc(nv)?,
+            jacdif: a.alloc(3 * nv)?,
+            jac1: a.alloc(3 * nv)?,
+            jac2: a.alloc(3 * nv)?,
+            chain: if sparse { a.alloc_int(nv)? } else { &mut [] },
+        });
+    }
+    let Some(b) = s.body.as_mut() else {
+        return Ok(());
+    };
+    // the normal projection goes to the first row of jac, as in 2.2.2
+    let normal = &mut s.jac[..nv];
+    let efc_force = &mut *b.efc_force;
+    efc_force.fill(0.0);
+    b.exclude.fill(0.0);
+    let mut counter = 0;
+    for c in d.contact.iter().take(ncon) {
+        let b1 = m.geom_bodyid()[c.geom1 as usize];
+        let b2 = m.geom_bodyid()[c.geom2 as usize];
+        if b1 != id && b2 != id {
+            continue;
+        }
+        if c.exclude == 0 {
+            counter += 1;
+            let adr = c.efc_address.max(0) as usize;
+            if c.dim == 1 || elliptic {
+                if let Some(f) = efc_force.get_mut(adr) {
+                    *f = 1.0;
                 }
-            } else if c.exclude == 1 {
-                counter += 1;
-                let n = jac_dif_pair(
-                    m,
-                    d.cdof,
-                    d.subtree_com,
-                    chain,
-                    b1 as usize,
-                    b2 as usize,
-                    &c.pos,
-                    &c.pos,
-                    jac1,
-                    jac2,
-                    jacdif,
-                    false,
-                );
-                mul_mat_mat(normal, &c.frame[..3], jacdif, 1, 3, n);
-                if is_sparse(m) {
-                    for k in 0..n {
-                        exclude[chain[k] as usize] += normal[k];
-                    }
-                } else {
-                    add_to(exclude, &normal[..nv]);
+            } else {
+                let npyramid = (c.dim - 1) as usize;
+                for f in efc_force.iter_mut().skip(adr).take(2 * npyramid) {
+                    *f = 0.5 / npyramid as f64;
                 }
             }
+        } else if c.exclude == 1 {
+            counter += 1;
+            let n = jac_dif_pair(
+                m,
+                d.cdof,
+                d.subtree_com,
+                b.chain,
+                b1 as usize,
+                b2 as usize,
+                &c.pos,
+                &c.pos,
+                b.jac1,
+                b.jac2,
+                b.jacdif,
+                false,
+            );
+            mul_mat_mat(normal, &c.frame[..3], b.jacdif, 1, 3, n);
+            if sparse {
+                for k in 0..n {
+                    b.exclude[b.chain[k] as usize] += normal[k];
+                }
+            } else {
+                add_to(b.exclude, &normal[..nv]);
+            }
         }
-        if counter > 0 {
-            let moment = &mut d.actuator_moment[i * nv..(i + 1) * nv];
-            super::constraint::jac_view!(m, d).mul_t_vec(moment, efc_force);
-            add_to(moment, exclude);
-            scl_in_place(moment, -1.0 / counter as f64);
-        }
-        Ok(())
-    })
+    }
+    if counter > 0 {
+        let moment = &mut d.actuator_moment[i * nv..(i + 1) * nv];
+        super::constraint::jac_view!(m, d).mul_t_vec(moment, efc_force);
+        add_to(moment, b.exclude);
+        scl_in_place(moment, -1.0 / counter as f64);
+    }
+    Ok(())
 }
 
 /// Joint transmission: scalar gear for slide/hinge, 3D or 6D wrench gear for ball/free.

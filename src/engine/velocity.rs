@@ -1,7 +1,7 @@
 //! Velocity stage: body spatial velocities (cvel) and time derivatives of motion axes (cdof_dot).
 
 use super::linalg::{max, put, row};
-use super::{Data, Model, JNT_BALL, JNT_FREE, MINVAL};
+use super::{Data, EngineError, Model, JNT_BALL, JNT_FREE, MINVAL};
 use crate::math::*;
 
 fn add6(a: &mut Vec6, b: &Vec6) {
@@ -56,10 +56,21 @@ fn body_com_vel(m: &Model, d: &Data, i: usize) -> Vec6 {
 
 /// subtree_linvel (com velocity) and subtree_angmom (angular momentum about the subtree com)
 /// of every body (mj_subtreeVel).
-pub fn subtree_vel(m: &Model, d: &mut Data) {
+pub fn subtree_vel(m: &Model, d: &mut Data) -> Result<(), EngineError> {
+    let nbody = m.raw.nbody as usize;
+    // the body velocities, kept on the stack as 2.2.2 keeps them (6 per body)
+    d.with_scratch(|d, a| -> Result<(), EngineError> {
+        let body_vel = a.alloc_stale(6 * nbody)?;
+        subtree_vel_with(m, d, body_vel);
+        Ok(())
+    })
+}
+
+fn subtree_vel_with(m: &Model, d: &mut Data, body_vel: &mut [f64]) {
     let nbody = m.raw.nbody as usize;
     for i in 0..nbody {
         let vel = body_com_vel(m, d, i);
+        put(body_vel, i, &vel);
         let mass = m.body_mass()[i];
         put(d.subtree_linvel, i, &scl3(&v3(&vel[3..]), mass));
         let ximat = row::<9>(d.ximat, i);
@@ -84,7 +95,7 @@ pub fn subtree_vel(m: &Model, d: &mut Data) {
 
     for i in (1..nbody).rev() {
         let p = m.body_parentid()[i] as usize;
-        let vel = body_com_vel(m, d, i);
+        let vel = row::<6>(body_vel, i);
         let com_i = row::<3>(d.subtree_com, i);
         let linvel_i = row::<3>(d.subtree_linvel, i);
 

@@ -169,7 +169,9 @@ pub fn broadphase<'a>(
     }
 
     if let Some(frame) = principal_frame(m, d) {
-        sweep_and_prune(m, d, a, &frame, &mut pairs)?;
+        // its buffers are released on return, the pair list stays (the contact filter then
+        // sees 2.2.2's stack top)
+        a.scope(|a| sweep_and_prune(m, d, a, &frame, &mut pairs))?;
     }
 
     // integers: any sort gives glibc's order
@@ -196,39 +198,37 @@ fn sweep_and_prune(
     if count == 0 {
         return Ok(());
     }
-    const MAX: i32 = 0x10000;
-    // entries: body (+MAX for a box's upper end), keyed by its f32 bound on axis 0
-    let entries = a.alloc_int(2 * count)?;
-    let keys = a.alloc(nbody * 2)?;
+    const MAX: u64 = 0x10000;
+    // 2.2.2's mjtBroadphase in one stack slot each: the body (+MAX for a box's upper end) in the
+    // low 32 bits, its f32 bound on axis 0 in the high ones; 2*count slots for the sorted list
+    // and 2*count for the active list (which also serves as the merge sort's buffer)
+    let entries = a.alloc_u64_stale(2 * count)?;
+    let active = a.alloc_u64_stale(2 * count)?;
     for (j, b) in (1..nbody).filter(|&b| can_collide(m, b)).enumerate() {
-        keys[2 * b] = aabb[6 * b] as f32 as f64;
-        keys[2 * b + 1] = aabb[6 * b + 1] as f32 as f64;
-        entries[2 * j] = b as i32;
-        entries[2 * j + 1] = b as i32 + MAX;
+        let (lo, hi) = (aabb[6 * b] as f32, aabb[6 * b + 1] as f32);
+        entries[2 * j] = (u64::from(lo.to_bits()) << 32) | b as u64;
+        entries[2 * j + 1] = (u64::from(hi.to_bits()) << 32) | (b as u64 + MAX);
     }
-    let key = |e: &i32| -> f64 {
-        let b = (e & 0xFFFF) as usize;
-        keys[2 * b + (e & MAX != 0) as usize]
-    };
-    let tmp = a.alloc_int(2 * count)?;
+    let key = |e: &u64| -> f32 { f32::from_bits((e >> 32) as u32) };
+    let ismax = |e: u64| e & 0xFFFF_FFFF;
     // 2.2.2's comparison: less -> -1, equal -> 0, else (also NaN) -> 1; merged first if <= 0
     // without NaN keys the order is total: the stable order is the key order with ties in
     // creation order (body, then lower before upper end), which an unstable sort reproduces
-    if keys.iter().any(|k| k.is_nan()) {
-        merge_sort(entries, tmp, &|x, y| key(x) <= key(y));
+    if entries.iter().any(|e| key(e).is_nan()) {
+        merge_sort(entries, active, &|x, y| key(x) <= key(y));
     } else {
         entries.sort_unstable_by(|x, y| {
             key(x)
                 .partial_cmp(&key(y))
                 .unwrap_or(std::cmp::Ordering::Equal)
                 .then((x & 0xFFFF).cmp(&(y & 0xFFFF)))
-                .then(x.cmp(y))
+                .then(ismax(*x).cmp(&ismax(*y)))
         });
     }
 
-    let active = a.alloc_int(2 * count)?;
     let mut nactive = 0;
     for &e in entries.iter() {
+        let e = ismax(e);
         if e & MAX == 0 {
             let b2 = e as usize;
             for &b1 in &active[..nactive] {

@@ -241,7 +241,8 @@ fn collide_geoms(
             dim: p.condim,
             geom1: g1 as i32,
             geom2: g2 as i32,
-            exclude: (c.dist >= includemargin) as i32,
+            // 2.2.2 includes a contact when dist < includemargin: NaN distances are excluded
+            exclude: if c.dist < includemargin { 0 } else { 1 },
             efc_address: -1,
         };
         if !add_contact(m, d, contact)? {
