@@ -107,7 +107,7 @@ fn play(program: &str, lib: Lib, script: &[(&str, Vec<&str>)]) -> Vec<(String, u
         if !args.is_empty() {
             xdotool(&x.display, &args);
         }
-        std::thread::sleep(Duration::from_millis(700));
+        std::thread::sleep(Duration::from_millis(400));
         assert!(
             child.try_wait().unwrap().is_none(),
             "{program} on {lib:?} stopped at step {name}"
