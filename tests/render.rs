@@ -7,48 +7,22 @@ mod common;
 
 use common::*;
 
-const OSMESA_H: &str = "/usr/include/GL/osmesa.h";
-
-fn compile(name: &str, lib: Lib) -> std::path::PathBuf {
-    let src = root().join(format!("capi-tests/{name}.c"));
-    let out = work_dir("render").join(format!("{name}-{}", lib.name()));
-    let (inc, dir) = match lib {
-        Lib::Ref => (
-            "/usr/include".to_string(),
-            "/usr/lib/x86_64-linux-gnu".to_string(),
-        ),
-        _ => (
-            root().join("include").to_string_lossy().into_owned(),
-            lib_dir().to_string_lossy().into_owned(),
-        ),
-    };
-    let status = std::process::Command::new("gcc")
-        .args(["-O1", "-o"])
-        .arg(&out)
-        .arg(&src)
-        .args(["-I", &inc, "-L", &dir, "-lmujoco", "-lOSMesa", "-lm"])
-        .arg(format!("-Wl,-rpath,{dir}"))
-        .status()
-        .unwrap();
-    assert!(status.success(), "{name}.c does not compile");
-    out
-}
-
-fn require_osmesa() {
-    require_reference();
-    our_lib();
-    assert!(
-        std::path::Path::new(OSMESA_H).exists(),
-        "{OSMESA_H} missing: install libosmesa6-dev (capi-tests/run-all does it)"
-    );
-}
-
 #[test]
 fn context_matches_reference() {
     require_osmesa();
     let (r, o) = (
-        compile("render_context", Lib::Ref),
-        compile("render_context", Lib::Ours),
+        compile_gl(
+            "capi-tests/render_context.c",
+            "render_context",
+            Lib::Ref,
+            &["-lOSMesa"],
+        ),
+        compile_gl(
+            "capi-tests/render_context.c",
+            "render_context",
+            Lib::Ours,
+            &["-lOSMesa"],
+        ),
     );
     let mut files = models();
     files.extend(
@@ -101,7 +75,9 @@ fn differences(
     chunk: usize,
     flags: impl Fn(usize) -> Vec<&'static str> + Sync,
 ) -> (Vec<String>, String) {
-    let (r, o) = (compile(name, Lib::Ref), compile(name, Lib::Ours));
+    let src = format!("capi-tests/{name}.c");
+    let r = compile_gl(&src, name, Lib::Ref, &["-lOSMesa"]);
+    let o = compile_gl(&src, name, Lib::Ours, &["-lOSMesa"]);
     let chunks: Vec<&[String]> = files.chunks(chunk).collect();
     let results = par_map(&chunks, |i, chunk| {
         let mut args = flags(i);
@@ -194,36 +170,13 @@ fn headless_example_matches_reference() {
     );
     let dir = work_dir("render");
     let build = |lib: Lib, gl: &str| {
-        let out = dir.join(format!("render_headless-{gl}-{}", lib.name()));
-        let (inc, libdir) = match lib {
-            Lib::Ref => (
-                "/usr/include".to_string(),
-                "/usr/lib/x86_64-linux-gnu".to_string(),
-            ),
-            _ => (
-                root().join("include").to_string_lossy().into_owned(),
-                lib_dir().to_string_lossy().into_owned(),
-            ),
-        };
-        let mut cmd = std::process::Command::new("gcc");
-        cmd.arg("-O1")
-            .arg(root().join("examples/render_headless.c"))
-            .args(["-I", &inc, "-L", &libdir, "-lmujoco"]);
-        if gl == "osmesa" {
-            cmd.args(["-DOSMESA", "-lOSMesa"]);
+        let flags: &[&str] = if gl == "osmesa" {
+            &["-DOSMESA", "-lOSMesa"]
         } else {
-            cmd.arg("-lEGL");
-        }
-        let status = cmd
-            .args(["-lm", &format!("-Wl,-rpath,{libdir}"), "-o"])
-            .arg(&out)
-            .status()
-            .unwrap();
-        assert!(
-            status.success(),
-            "render_headless.c ({gl}) does not compile"
-        );
-        out
+            &["-lEGL"]
+        };
+        let name = format!("render_headless-{gl}");
+        compile_gl("examples/render_headless.c", &name, lib, flags)
     };
     let mut models = vec![model("arm3.xml")];
     models.extend(

@@ -7,42 +7,12 @@ mod common;
 
 use common::*;
 
-const OSMESA_H: &str = "/usr/include/GL/osmesa.h";
-
-fn compile(lib: Lib) -> std::path::PathBuf {
-    let src = root().join("capi-tests/render_figure.c");
-    let out = work_dir("render").join(format!("render_figure-{}", lib.name()));
-    let (inc, dir) = match lib {
-        Lib::Ref => (
-            "/usr/include".to_string(),
-            "/usr/lib/x86_64-linux-gnu".to_string(),
-        ),
-        _ => (
-            root().join("include").to_string_lossy().into_owned(),
-            lib_dir().to_string_lossy().into_owned(),
-        ),
-    };
-    let status = std::process::Command::new("gcc")
-        .args(["-O1", "-Wall", "-o"])
-        .arg(&out)
-        .arg(&src)
-        .args(["-I", &inc, "-L", &dir, "-lmujoco", "-lOSMesa", "-lm"])
-        .arg(format!("-Wl,--disable-new-dtags,-rpath,{dir}"))
-        .status()
-        .unwrap();
-    assert!(status.success(), "render_figure.c does not compile");
-    out
-}
-
 #[test]
 fn figures_match_reference() {
-    require_reference();
-    our_lib();
-    assert!(
-        std::path::Path::new(OSMESA_H).exists(),
-        "{OSMESA_H} missing: install libosmesa6-dev (capi-tests/run-all does it)"
-    );
-    let (r, o) = (compile(Lib::Ref), compile(Lib::Ours));
+    require_osmesa();
+    let src = "capi-tests/render_figure.c";
+    let r = compile_gl(src, "render_figure", Lib::Ref, &["-lOSMesa"]);
+    let o = compile_gl(src, "render_figure", Lib::Ours, &["-lOSMesa"]);
     let reference = text(&run(&r, &[], &[], 300).stdout);
     let ours = run(&o, &[], &[], 300);
     let (out, stderr) = (text(&ours.stdout), text(&ours.stderr));

@@ -11,45 +11,15 @@ mod common;
 use common::*;
 use std::path::PathBuf;
 
-const OSMESA_H: &str = "/usr/include/GL/osmesa.h";
-
 /// The test program against one library; `platform`: linked with OSMesa (else built with
 /// NO_PLATFORM, no OpenGL platform library in the process).
 fn compile(lib: Lib, platform: bool) -> PathBuf {
-    let src = root().join("capi-tests/render_misuse.c");
-    let suffix = if platform { "" } else { "-noplatform" };
-    let out = work_dir("render").join(format!("render_misuse{suffix}-{}", lib.name()));
-    let (inc, dir) = match lib {
-        Lib::Ref => (
-            "/usr/include".to_string(),
-            "/usr/lib/x86_64-linux-gnu".to_string(),
-        ),
-        _ => (
-            root().join("include").to_string_lossy().into_owned(),
-            lib_dir().to_string_lossy().into_owned(),
-        ),
-    };
-    let mut cmd = std::process::Command::new("gcc");
-    cmd.args(["-O1", "-Wall", "-Werror", "-o"])
-        .arg(&out)
-        .arg(&src)
-        .args(["-I", &inc, "-L", &dir, "-lmujoco"]);
-    if platform {
-        cmd.arg("-lOSMesa");
+    let (name, flags) = if platform {
+        ("render_misuse", ["-lOSMesa", "-Werror"])
     } else {
-        cmd.arg("-DNO_PLATFORM");
-    }
-    let o = cmd
-        .arg("-lm")
-        .arg(format!("-Wl,--disable-new-dtags,-rpath,{dir}"))
-        .output()
-        .unwrap();
-    assert!(
-        o.status.success(),
-        "render_misuse.c does not compile:\n{}",
-        text(&o.stderr)
-    );
-    out
+        ("render_misuse-noplatform", ["-DNO_PLATFORM", "-Werror"])
+    };
+    compile_gl("capi-tests/render_misuse.c", name, lib, &flags)
 }
 
 /// One case's output: its header line and the lines after it.
@@ -157,12 +127,7 @@ fn compare(reference: &str, ours: &str, tally: &mut Tally) -> Vec<String> {
 
 #[test]
 fn misuse_matches_reference() {
-    require_reference();
-    our_lib();
-    assert!(
-        std::path::Path::new(OSMESA_H).exists(),
-        "{OSMESA_H} missing: install libosmesa6-dev (capi-tests/run-all does it)"
-    );
+    require_osmesa();
     let mut tally = Tally::default();
     let mut failures = Vec::new();
     for platform in [true, false] {

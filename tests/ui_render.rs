@@ -8,42 +8,11 @@ mod common;
 
 use common::*;
 
-const OSMESA_H: &str = "/usr/include/GL/osmesa.h";
-
-fn compile(lib: Lib) -> std::path::PathBuf {
-    let src = root().join("capi-tests/ui_render.c");
-    let out = work_dir("render").join(format!("ui_render-{}", lib.name()));
-    let (inc, dir) = match lib {
-        Lib::Ref => (
-            "/usr/include".to_string(),
-            "/usr/lib/x86_64-linux-gnu".to_string(),
-        ),
-        _ => (
-            root().join("include").to_string_lossy().into_owned(),
-            lib_dir().to_string_lossy().into_owned(),
-        ),
-    };
-    let status = std::process::Command::new("gcc")
-        .args(["-std=c11", "-O1", "-Wall", "-o"])
-        .arg(&out)
-        .arg(&src)
-        .args(["-I", &inc, "-L", &dir, "-lmujoco", "-lOSMesa", "-lm"])
-        .arg(format!("-Wl,-rpath,{dir}"))
-        .status()
-        .unwrap();
-    assert!(status.success(), "ui_render.c does not compile");
-    out
-}
-
 #[test]
 fn ui_matches_reference() {
-    require_reference();
-    our_lib();
-    assert!(
-        std::path::Path::new(OSMESA_H).exists(),
-        "{OSMESA_H} missing: install libosmesa6-dev (capi-tests/run-all does it)"
-    );
-    let progs = [compile(Lib::Ref), compile(Lib::Ours)];
+    require_osmesa();
+    let progs = [Lib::Ref, Lib::Ours]
+        .map(|lib| compile_gl("capi-tests/ui_render.c", "ui_render", lib, &["-lOSMesa"]));
     let outputs = par_map(&progs, |_, p| run(p, &[], &[], 600));
     let (reference, ours) = (text(&outputs[0].stdout), text(&outputs[1].stdout));
     let stderr = text(&outputs[1].stderr);

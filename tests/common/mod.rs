@@ -485,3 +485,49 @@ impl Drop for Xvfb {
         let _ = self.child.wait();
     }
 }
+
+/// Mesa's OSMesa header, present when the GL tests can build.
+pub const OSMESA_H: &str = "/usr/include/GL/osmesa.h";
+
+/// Requires the reference, our library and OSMesa's headers for a rendering test.
+pub fn require_osmesa() {
+    require_reference();
+    our_lib();
+    assert!(
+        Path::new(OSMESA_H).exists(),
+        "{OSMESA_H} missing: install libosmesa6-dev (capi-tests/run-all does it)"
+    );
+}
+
+/// A C file (a path below the repository root) built against one library with extra flags
+/// after the library (GL platform libraries, defines); the binary is `name-<lib>` in
+/// target/capi-tests/render.
+pub fn compile_gl(src: &str, name: &str, lib: Lib, flags: &[&str]) -> PathBuf {
+    let out = work_dir("render").join(format!("{name}-{}", lib.name()));
+    let (inc, dir) = match lib {
+        Lib::Ref => (
+            "/usr/include".to_string(),
+            "/usr/lib/x86_64-linux-gnu".to_string(),
+        ),
+        _ => (
+            root().join("include").to_string_lossy().into_owned(),
+            lib_dir().to_string_lossy().into_owned(),
+        ),
+    };
+    let o = Command::new("gcc")
+        .args(["-std=gnu11", "-O1", "-Wall", "-o"])
+        .arg(&out)
+        .arg(root().join(src))
+        .args(["-I", &inc, "-L", &dir, "-lmujoco"])
+        .args(flags)
+        .arg("-lm")
+        .arg(format!("-Wl,--disable-new-dtags,-rpath,{dir}"))
+        .output()
+        .unwrap();
+    assert!(
+        o.status.success(),
+        "{src} does not compile against {lib:?}:\n{}",
+        text(&o.stderr)
+    );
+    out
+}
