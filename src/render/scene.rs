@@ -493,7 +493,7 @@ struct Draw<'a> {
     con: &'a mjrContext,
     geoms: &'a [mjvGeom],
     /// Transparent geoms, nearest first.
-    order: &'a [usize],
+    order: &'a [i32],
     lights: &'a [mjvLight],
     head: [f32; 3],
     skins: Skins<'a>,
@@ -502,6 +502,11 @@ struct Draw<'a> {
 }
 
 impl Draw<'_> {
+    /// The transparent geoms' indices, nearest first.
+    fn transparent(&self) -> impl DoubleEndedIterator<Item = usize> + '_ {
+        self.order.iter().map(|&j| j as usize)
+    }
+
     fn geom(&self, g: &mjvGeom, mode: Mode) {
         render_geom(self.gl, g, mode, &self.head, &self.skins, self.con);
     }
@@ -577,11 +582,11 @@ fn reflections(pass: &Draw) {
         gl.glDepthMask(0);
         gl.glEnable(GL_BLEND);
         pass.blend_transparent();
-        for &j in pass.order.iter().filter(|&&j| j != i) {
+        for j in pass.transparent().filter(|&j| j != i) {
             render_reflection(gl, &geoms[j], r, &head, skins, con);
         }
         if !pass.additive {
-            for &j in pass.order.iter().rev().filter(|&&j| j != i) {
+            for j in pass.transparent().rev().filter(|&j| j != i) {
                 render_reflection(gl, &geoms[j], r, &head, skins, con);
             }
         }
@@ -855,7 +860,7 @@ pub fn render(
     if stereo == side {
         viewport.width /= 2;
     }
-    let order: Vec<usize> = scn.geomorder[..nt].iter().map(|&i| i as usize).collect();
+    let order: &[i32] = order;
     let wire = if flag(mjtRndFlag_::mjRND_WIREFRAME) {
         GL_LINE
     } else {
@@ -866,7 +871,7 @@ pub fn render(
         gl,
         con,
         geoms,
-        order: &order,
+        order,
         lights: &raw.lights[..nlight],
         head,
         skins: Skins {
@@ -969,11 +974,11 @@ pub fn render(
         gl.glDepthMask(0);
         gl.glEnable(GL_BLEND);
         draw.blend_transparent();
-        for &j in &order {
+        for j in draw.transparent() {
             draw.geom(&geoms[j], Mode::Normal);
         }
         if !draw.additive {
-            for &j in order.iter().rev() {
+            for j in draw.transparent().rev() {
                 draw.geom(&geoms[j], Mode::Normal);
             }
         }
