@@ -26,7 +26,17 @@ pub fn pending(name: &str) {
 
 /// Runs `f`, turning a core error or a panic into `mju_error`; returns `fallback` then.
 pub fn guard<R>(name: &str, fallback: R, f: impl FnOnce() -> Result<R, EngineError>) -> R {
-    match crate::runtime::guard::catch(name, f) {
+    guard_explained(name, fallback, f, |_| None)
+}
+
+/// As `guard`, where `explain` may word the message of a panic from its payload.
+pub fn guard_explained<R>(
+    name: &str,
+    fallback: R,
+    f: impl FnOnce() -> Result<R, EngineError>,
+    explain: impl FnOnce(&(dyn std::any::Any + Send)) -> Option<String>,
+) -> R {
+    match crate::runtime::guard::catch_explained(name, f, explain) {
         Ok(Ok(r)) => r,
         Ok(Err(e)) => {
             errmem::error(&e.0);

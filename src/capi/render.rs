@@ -28,17 +28,7 @@ pub(super) fn with_gl<R>(
             }
         })
     };
-    match crate::runtime::guard::catch_explained(name, || f(gl), explain) {
-        Ok(Ok(r)) => r,
-        Ok(Err(e)) => {
-            errmem::error(&e.0);
-            fallback
-        }
-        Err(msg) => {
-            errmem::error(&msg);
-            fallback
-        }
-    }
+    super::guard_explained(name, fallback, || f(gl), explain)
 }
 
 /// A NULL context is reported (2.2.2 would crash).
