@@ -59,6 +59,10 @@ pub struct JacView<'x> {
     pub t_rownnz: &'x [i32],
     pub t_rowadr: &'x [i32],
     pub t_colind: &'x [i32],
+    /// supernodes of J and J' as make_constraint left them; None where the caller may have
+    /// changed J since (the exported products)
+    pub rowsuper: Option<&'x [i32]>,
+    pub t_rowsuper: Option<&'x [i32]>,
 }
 
 /// Borrows the Jacobian fields of `d` (field by field, so other fields stay writable).
@@ -76,6 +80,8 @@ macro_rules! jac_view {
             t_rownnz: &*$d.efc_JT_rownnz,
             t_rowadr: &*$d.efc_JT_rowadr,
             t_colind: &*$d.efc_JT_colind,
+            rowsuper: Some(&*$d.efc_J_rowsuper),
+            t_rowsuper: Some(&*$d.efc_JT_rowsuper),
         }
     };
 }
@@ -96,6 +102,7 @@ impl JacView<'_> {
                 self.rownnz,
                 self.rowadr,
                 self.colind,
+                self.rowsuper,
             );
         } else {
             mul_mat_vec(res, self.j, vec, self.nefc, self.nv);
@@ -109,7 +116,7 @@ impl JacView<'_> {
         }
         if self.sparse {
             let (nnz, adr, ind) = (self.t_rownnz, self.t_rowadr, self.t_colind);
-            mul_mat_vec_sparse(res, self.jt, vec, self.nv, nnz, adr, ind);
+            mul_mat_vec_sparse(res, self.jt, vec, self.nv, nnz, adr, ind, self.t_rowsuper);
         } else {
             mul_mat_t_vec(res, self.j, vec, self.nefc, self.nv);
         }
@@ -133,7 +140,11 @@ pub fn mul_jac_vec(
     res: &mut [f64],
     vec: &[f64],
 ) -> Result<(), EngineError> {
-    jac_view!(m, d).mul_vec(res, vec);
+    let j = JacView {
+        rowsuper: None,
+        ..jac_view!(m, d)
+    };
+    j.mul_vec(res, vec);
     Ok(())
 }
 
@@ -144,7 +155,11 @@ pub fn mul_jac_t_vec(
     res: &mut [f64],
     vec: &[f64],
 ) -> Result<(), EngineError> {
-    jac_view!(m, d).mul_t_vec(res, vec);
+    let j = JacView {
+        t_rowsuper: None,
+        ..jac_view!(m, d)
+    };
+    j.mul_t_vec(res, vec);
     Ok(())
 }
 

@@ -117,7 +117,7 @@ fn warmstart(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> 
         let arf = a.alloc(nefc)?;
         if is_sparse(m) {
             let (nnz, adr, ind) = (&*d.efc_AR_rownnz, &*d.efc_AR_rowadr, &*d.efc_AR_colind);
-            mul_mat_vec_sparse(arf, d.efc_AR, d.efc_force, nefc, nnz, adr, ind);
+            mul_mat_vec_sparse(arf, d.efc_AR, d.efc_force, nefc, nnz, adr, ind, None);
         } else {
             mul_mat_vec(arf, d.efc_AR, d.efc_force, nefc, nefc);
         }

@@ -283,6 +283,7 @@ pub fn tendon_velocity(m: &Model, d: &mut Data) {
             d.ten_J_rownnz,
             d.ten_J_rowadr,
             d.ten_J_colind,
+            None,
         );
     } else {
         mul_mat_vec(d.ten_velocity, d.ten_J, d.qvel, nten, m.raw.nv as usize);

@@ -98,7 +98,10 @@ pub fn sparse2dense(
 }
 
 /// res (nr) = sparse mat * dense vec. Each row is summed left to right; consecutive rows
-/// with the same pattern are summed side by side (the same sums, computed together).
+/// with the same pattern are summed side by side (the same sums, computed together). Those
+/// runs come from `rowsuper` (rows following each row with its pattern, as `super_sparse`
+/// makes it) when the caller has one it made itself, else from comparing the patterns.
+#[allow(clippy::too_many_arguments)]
 pub fn mul_mat_vec_sparse(
     res: &mut [f64],
     mat: &[f64],
@@ -107,6 +110,7 @@ pub fn mul_mat_vec_sparse(
     rownnz: &[i32],
     rowadr: &[i32],
     colind: &[i32],
+    rowsuper: Option<&[i32]>,
 ) {
     let mut r = 0;
     while r < nr {
@@ -117,45 +121,48 @@ pub fn mul_mat_vec_sparse(
         }
         let (adr, nnz) = (u(rowadr[r]), u(rownnz[r]));
         let ind = &colind[adr..adr + nnz];
-        let same = |q: usize| {
-            q < nr && rownnz[q] == rownnz[r] && {
-                let a = u(rowadr[q]);
-                same_pattern(&colind[a..a + nnz], ind)
+        // rows r.. sharing the pattern, up to 4
+        let run = match rowsuper {
+            Some(sup) => (u(sup[r].max(0)) + 1).min(4).min(nr - r),
+            None => {
+                let same = |q: usize| {
+                    q < nr && rownnz[q] == rownnz[r] && {
+                        let a = u(rowadr[q]);
+                        same_pattern(&colind[a..a + nnz], ind)
+                    }
+                };
+                1 + (1..4).take_while(|&k| same(r + k)).count()
             }
         };
-        let row = |q: usize| {
-            let a = u(rowadr[q]);
-            &mat[a..a + nnz]
-        };
-        if same(r + 1) {
-            if same(r + 2) && same(r + 3) {
-                let (m0, m1, m2, m3) = (row(r), row(r + 1), row(r + 2), row(r + 3));
-                let mut s = [0.0; 4];
-                for k in 0..nnz {
-                    let x = vec[u(ind[k])];
-                    s[0] += m0[k] * x;
-                    s[1] += m1[k] * x;
-                    s[2] += m2[k] * x;
-                    s[3] += m3[k] * x;
-                }
-                res[r..r + 4].copy_from_slice(&s);
-                r += 4;
-            } else {
-                let (m0, m1) = (row(r), row(r + 1));
-                let mut s = [0.0; 2];
-                for k in 0..nnz {
-                    let x = vec[u(ind[k])];
-                    s[0] += m0[k] * x;
-                    s[1] += m1[k] * x;
-                }
-                res[r..r + 2].copy_from_slice(&s);
-                r += 2;
-            }
-            continue;
+        let rows = &mut res[r..r + run];
+        match run {
+            4 => rows_times_vec::<4>(rows, mat, vec, &rowadr[r..], ind),
+            3 => rows_times_vec::<3>(rows, mat, vec, &rowadr[r..], ind),
+            2 => rows_times_vec::<2>(rows, mat, vec, &rowadr[r..], ind),
+            _ => rows[0] = dot_sparse(&mat[adr..adr + nnz], vec, nnz, ind),
         }
-        res[r] = dot_sparse(row(r), vec, nnz, ind);
-        r += 1;
+        r += run;
     }
+}
+
+/// N rows of one pattern `ind` (at rowadr[0..N]) times vec, each summed left to right.
+fn rows_times_vec<const N: usize>(
+    res: &mut [f64],
+    mat: &[f64],
+    vec: &[f64],
+    rowadr: &[i32],
+    ind: &[i32],
+) {
+    let nnz = ind.len();
+    let m: [&[f64]; N] = std::array::from_fn(|q| &mat[u(rowadr[q])..u(rowadr[q]) + nnz]);
+    let mut s = [0.0; N];
+    for (k, &i) in ind.iter().enumerate() {
+        let x = vec[u(i)];
+        for q in 0..N {
+            s[q] += m[q][k] * x;
+        }
+    }
+    res[..N].copy_from_slice(&s);
 }
 
 /// res = res*a + vec*b

@@ -374,7 +374,7 @@ fn sparse_products_match_dense() {
 
     let v = [1.0, -1.0, 0.5, 2.0, -3.0];
     let (mut y, mut yd) = ([0.0; 4], [0.0; 4]);
-    mul_mat_vec_sparse(&mut y, &s, &v, nr, &nnz, &adr, &col);
+    mul_mat_vec_sparse(&mut y, &s, &v, nr, &nnz, &adr, &col, None);
     mul_mat_vec(&mut yd, &a, &v, nr, nc);
     assert!(close(&y, &yd, 1e-15));
 
@@ -542,4 +542,48 @@ fn sparse_cholesky_and_lu_solve() {
     );
     mul_mat_vec(&mut ax, &dense, &x, n, n);
     assert!(close(&ax, &b, 1e-14));
+}
+
+#[test]
+fn sparse_mat_vec_supernodes_sum_like_single_rows() {
+    use super::sparse::*;
+    // runs of 1 to 6 rows sharing a pattern, then rows of their own
+    let (nc, mut rows) = (7, Vec::new());
+    for (run, pat) in [
+        (6, vec![0, 2, 3, 6]),
+        (3, vec![1, 4]),
+        (1, vec![0, 5]),
+        (2, vec![2, 3, 4, 5, 6]),
+    ] {
+        for k in 0..run {
+            let mut row = vec![0.0; nc];
+            for (j, &c) in pat.iter().enumerate() {
+                row[c] = 0.1 + 1.7 * (k * 7 + j) as f64 / 3.0;
+            }
+            rows.push(row);
+        }
+    }
+    rows.push(vec![0.0; nc]);
+    let nr = rows.len();
+    let a: Vec<f64> = rows.concat();
+    let (mut s, mut nnz, mut adr, mut col) = (
+        vec![0.0; nr * nc],
+        vec![0; nr],
+        vec![0; nr],
+        vec![0; nr * nc],
+    );
+    dense2sparse(&mut s, &a, nr, nc, &mut nnz, &mut adr, &mut col);
+    let mut sup = vec![0; nr];
+    super_sparse(nr, &mut sup, &nnz, &adr, &col);
+    assert_eq!(&sup[..6], &[5, 4, 3, 2, 1, 0]);
+    let v: Vec<f64> = (0..nc).map(|i| 1.0 / (i as f64 + 0.3)).collect();
+    let (mut by_super, mut by_compare) = (vec![9.0; nr], vec![9.0; nr]);
+    mul_mat_vec_sparse(&mut by_super, &s, &v, nr, &nnz, &adr, &col, Some(&sup));
+    mul_mat_vec_sparse(&mut by_compare, &s, &v, nr, &nnz, &adr, &col, None);
+    for r in 0..nr {
+        let (a0, n) = (adr[r] as usize, nnz[r] as usize);
+        let single = dot_sparse(&s[a0..a0 + n], &v, n, &col[a0..a0 + n]);
+        assert_eq!(by_super[r].to_bits(), single.to_bits(), "row {r}");
+        assert_eq!(by_compare[r].to_bits(), single.to_bits(), "row {r}");
+    }
 }

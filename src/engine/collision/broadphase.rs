@@ -153,7 +153,7 @@ pub fn broadphase<'a>(
     let nbody = m.raw.nbody as usize;
     let maxpair = nbody * (nbody - 1) / 2;
     let mut pairs = Pairs {
-        pair: a.alloc_int(maxpair)?,
+        pair: a.alloc_int_stale(maxpair)?,
         n: 0,
     };
 
