@@ -383,6 +383,36 @@ pub fn super_sparse(
     }
 }
 
+/// buffer[col] += v[q] * mat[c + q][col] for q = 0..N in turn, over the columns col <= r of
+/// rows c.. (N rows of one pattern).
+fn add_rows_below<const N: usize>(
+    buffer: &mut [f64],
+    mat: &[f64],
+    m: &SparseRef,
+    c: usize,
+    r: usize,
+    v: &[f64; 4],
+) {
+    let start = u(m.rowadr[c]);
+    let nnz = u(m.rownnz[c]);
+    let cols = &m.colind[start..start + nnz];
+    let rows: [&[f64]; N] = std::array::from_fn(|q| {
+        let a = u(m.rowadr[c + q]);
+        &mat[a..a + nnz]
+    });
+    for (k, &col) in cols.iter().enumerate() {
+        let col = u(col);
+        if col > r {
+            break;
+        }
+        let mut b = buffer[col];
+        for q in 0..N {
+            b += v[q] * rows[q][k];
+        }
+        buffer[col] = b;
+    }
+}
+
 /// Sparse pattern and index inputs of `sqr_mat_td_sparse`.
 pub struct SparseRef<'a> {
     pub rownnz: &'a [i32],
@@ -482,24 +512,34 @@ pub fn sqr_mat_td_sparse(
         }
         let adr_t = u(mt.rowadr[r]);
         let nnz_t = u(mt.rownnz[r]);
-        for (&c, &vt) in mt.colind[adr_t..adr_t + nnz_t]
-            .iter()
-            .zip(&mat_t[adr_t..adr_t + nnz_t])
-        {
-            let c = u(c);
-            let mut v = vt;
-            if let Some(d) = diag {
-                v *= d[c];
-            }
-            let start = u(m.rowadr[c]);
-            let end = start + u(m.rownnz[c]);
-            for (&col, &x) in m.colind[start..end].iter().zip(&mat[start..end]) {
-                let col = u(col);
-                if col > r {
-                    break;
+        let (cols_t, vals_t) = (
+            &mt.colind[adr_t..adr_t + nnz_t],
+            &mat_t[adr_t..adr_t + nnz_t],
+        );
+        let mut i = 0;
+        while i < nnz_t {
+            // rows c, c+1, .. of mat with one pattern (a supernode) add into buffer together:
+            // each element still gets their terms one after another, in order of c
+            let c = u(cols_t[i]);
+            let run = match m.rowsuper {
+                Some(sup) => {
+                    let max = (u(sup[c].max(0)) + 1).min(4).min(nnz_t - i);
+                    1 + (1..max).take_while(|&q| u(cols_t[i + q]) == c + q).count()
                 }
-                buffer[col] += v * x;
+                None => 1,
+            };
+            let v: [f64; 4] = std::array::from_fn(|q| match (q < run, diag) {
+                (false, _) => 0.0,
+                (true, Some(d)) => vals_t[i + q] * d[c + q],
+                (true, None) => vals_t[i + q],
+            });
+            match run {
+                4 => add_rows_below::<4>(buffer, mat, m, c, r, &v),
+                3 => add_rows_below::<3>(buffer, mat, m, c, r, &v),
+                2 => add_rows_below::<2>(buffer, mat, m, c, r, &v),
+                _ => add_rows_below::<1>(buffer, mat, m, c, r, &v),
             }
+            i += run;
         }
         for (x, &ci) in res[adr..adr + n].iter_mut().zip(&res_colind[adr..adr + n]) {
             *x = buffer[u(ci)];
