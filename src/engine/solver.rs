@@ -10,7 +10,7 @@ use super::{disabled, tick, Data, EngineError, Model, MINVAL};
 use crate::abi::view::Arena;
 use crate::abi::*;
 use crate::math::blas::{add_to_scl, dot, mul_mat_vec, norm, scl, sqr_mat_td, sub_from};
-use crate::math::chol::{chol_factor, chol_solve, chol_update};
+use crate::math::chol::{chol_factor, chol_solve, chol_update, chol_update2};
 use crate::math::chol_sparse::{chol_factor_sparse, chol_solve_sparse, chol_update_sparse};
 use crate::math::sparse::{
     compress_sparse, dot_sparse, mul_mat_vec_sparse, sqr_mat_td_sparse, SparseRef,
@@ -811,6 +811,25 @@ fn hessian_cone(m: &Model, d: &mut Data, a: &mut Arena, c: &mut Ctx) -> Result<(
                     add_to_scl(&mut ltj[col * n..(col + 1) * n], jrow, local[r * dim + col]);
                 }
             }
+            if !c.sparse && nv <= PAIRED_NV {
+                // the rows in pairs, overlapping (chol_update2), in local arrays
+                let (mut first, mut second) = ([0.0; PAIRED_NV], [0.0; PAIRED_NV]);
+                let mut r = 0;
+                while r < dim {
+                    first[..nv].copy_from_slice(&ltj[r * nv..(r + 1) * nv]);
+                    if r + 1 < dim {
+                        second[..nv].copy_from_slice(&ltj[(r + 1) * nv..(r + 2) * nv]);
+                        chol_update2(c.hcone, &mut first, true, &mut second, true, nv);
+                        r += 2;
+                    } else {
+                        chol_update(c.hcone, &mut first, nv, true);
+                        r += 1;
+                    }
+                }
+                c.nupdate += dim as i32;
+                i += dim;
+                continue;
+            }
             for r in 0..dim {
                 row[..n].copy_from_slice(&ltj[r * n..(r + 1) * n]);
                 if c.sparse {
@@ -831,6 +850,9 @@ fn hessian_cone(m: &Model, d: &mut Data, a: &mut Arena, c: &mut Ctx) -> Result<(
     })
 }
 
+/// Largest nv whose dense rank-one updates run in pairs (`chol_update2`).
+const PAIRED_NV: usize = 64;
+
 /// Rank-one updates of the factor for rows whose quadratic state changed (HessianIncremental).
 /// A rank loss releases the scratch and refactors.
 fn hessian_incremental(
@@ -850,6 +872,9 @@ fn hessian_incremental(
             // the sparse update's own scratch (2.2.2 takes it in each update, so only once a
             // row changes), released before the cone update
             let mut scratch: Option<(&mut [i32], &mut [f64])> = None;
+            // dense rows waiting to be paired (local arrays: 2.2.2's scratch is one vector)
+            let (mut first, mut second) = ([0.0; PAIRED_NV], [0.0; PAIRED_NV]);
+            let mut pending: Option<bool> = None;
             for i in 0..nefc {
                 let (was, is) = (oldstate[i] == QUADRATIC, d.efc_state[i] == QUADRATIC);
                 if was == is {
@@ -872,12 +897,45 @@ fn hessian_incremental(
                         c.h, hvec, nv, is, c.rownnz, c.rowadr, c.colind, n, vec_ind, buf, buf_ind,
                     )
                     .map_err(|e| EngineError(e.into()))?
+                } else if nv <= PAIRED_NV {
+                    // held until the next changed row, so that the two updates overlap
+                    let slot = if pending.is_some() {
+                        &mut second
+                    } else {
+                        &mut first
+                    };
+                    for k in 0..nv {
+                        slot[k] = d.efc_J[i * nv + k] * s;
+                    }
+                    match pending.take() {
+                        None => {
+                            pending = Some(is);
+                            continue;
+                        }
+                        Some(was_plus) => {
+                            let (r1, r2) =
+                                chol_update2(c.h, &mut first, was_plus, &mut second, is, nv);
+                            // a rank loss in the first discards the second with H (refactored)
+                            c.nupdate += 1;
+                            if r1 < nv {
+                                return Ok(true);
+                            }
+                            r2
+                        }
+                    }
                 } else {
                     for k in 0..nv {
                         hvec[k] = d.efc_J[i * nv + k] * s;
                     }
                     chol_update(c.h, hvec, nv, is)
                 };
+                c.nupdate += 1;
+                if rank < nv {
+                    return Ok(true);
+                }
+            }
+            if let Some(is) = pending {
+                let rank = chol_update(c.h, &mut first, nv, is);
                 c.nupdate += 1;
                 if rank < nv {
                     return Ok(true);

@@ -62,39 +62,76 @@ pub fn chol_update(mat: &mut [f64], x: &mut [f64], n: usize, flg_plus: bool) -> 
     let mut rank = n;
     let (mat, x) = (&mut mat[..n * n], &mut x[..n]);
     for k in 0..n {
-        let xk = x[k];
-        if xk == 0.0 {
-            continue;
-        }
-        let lkk = mat[k * (n + 1)];
-        let mut t = lkk * lkk + if flg_plus { xk * xk } else { -xk * xk };
-        if t < MINVAL {
-            t = MINVAL;
-            rank -= 1;
-        }
-        let r = t.sqrt();
-        let c = r / lkk;
-        let cinv = 1.0 / c;
-        let s = xk / lkk;
-        mat[k * (n + 1)] = r;
-        // column k below the diagonal, then x from the updated column: each row i > k uses
-        // only its own entries, so both passes run row by row
-        let rows = mat[(k + 1) * n..]
-            .chunks_exact_mut(n)
-            .zip(x[k + 1..].iter_mut());
-        if flg_plus {
-            for (row, xi) in rows {
-                let m = (row[k] + s * *xi) * cinv;
-                row[k] = m;
-                *xi = c * *xi - s * m;
-            }
-        } else {
-            for (row, xi) in rows {
-                let m = (row[k] - s * *xi) * cinv;
-                row[k] = m;
-                *xi = c * *xi - s * m;
-            }
-        }
+        update_column(mat, x, n, k, flg_plus, &mut rank);
     }
     rank
+}
+
+/// Two rank-one updates in turn, x1's and then x2's, as two calls of `chol_update` would make
+/// them; x2's runs one column behind x1's, so that their chains of dependent operations
+/// overlap (column k of x2's update needs only column k of x1's). Returns both ranks.
+pub fn chol_update2(
+    mat: &mut [f64],
+    x1: &mut [f64],
+    plus1: bool,
+    x2: &mut [f64],
+    plus2: bool,
+    n: usize,
+) -> (usize, usize) {
+    let (mut rank1, mut rank2) = (n, n);
+    let (mat, x1, x2) = (&mut mat[..n * n], &mut x1[..n], &mut x2[..n]);
+    for k in 0..=n {
+        if k < n {
+            update_column(mat, x1, n, k, plus1, &mut rank1);
+        }
+        if k > 0 {
+            update_column(mat, x2, n, k - 1, plus2, &mut rank2);
+        }
+    }
+    (rank1, rank2)
+}
+
+/// Column k of a rank-one update: L(k..n, k) and x(k+1..n).
+#[inline(always)]
+fn update_column(
+    mat: &mut [f64],
+    x: &mut [f64],
+    n: usize,
+    k: usize,
+    flg_plus: bool,
+    rank: &mut usize,
+) {
+    let xk = x[k];
+    if xk == 0.0 {
+        return;
+    }
+    let lkk = mat[k * (n + 1)];
+    let mut t = lkk * lkk + if flg_plus { xk * xk } else { -xk * xk };
+    if t < MINVAL {
+        t = MINVAL;
+        *rank -= 1;
+    }
+    let r = t.sqrt();
+    let c = r / lkk;
+    let cinv = 1.0 / c;
+    let s = xk / lkk;
+    mat[k * (n + 1)] = r;
+    // column k below the diagonal, then x from the updated column: each row i > k uses
+    // only its own entries, so both passes run row by row
+    let rows = mat[(k + 1) * n..]
+        .chunks_exact_mut(n)
+        .zip(x[k + 1..].iter_mut());
+    if flg_plus {
+        for (row, xi) in rows {
+            let m = (row[k] + s * *xi) * cinv;
+            row[k] = m;
+            *xi = c * *xi - s * m;
+        }
+    } else {
+        for (row, xi) in rows {
+            let m = (row[k] - s * *xi) * cinv;
+            row[k] = m;
+            *xi = c * *xi - s * m;
+        }
+    }
 }

@@ -587,3 +587,32 @@ fn sparse_mat_vec_supernodes_sum_like_single_rows() {
         assert_eq!(by_compare[r].to_bits(), single.to_bits(), "row {r}");
     }
 }
+
+#[test]
+fn paired_chol_updates_are_two_updates_in_turn() {
+    let n = 7;
+    let mut a = vec![0.0; n * n];
+    for i in 0..n {
+        for j in 0..n {
+            a[i * n + j] =
+                1.0 / (1.0 + (i as f64 - j as f64).abs()) + if i == j { 3.0 } else { 0.0 };
+        }
+    }
+    chol_factor(&mut a, n, 1e-15);
+    let v1: Vec<f64> = (0..n)
+        .map(|i| if i == 2 { 0.0 } else { 0.3 * i as f64 - 0.8 })
+        .collect();
+    let v2: Vec<f64> = (0..n).map(|i| 0.9 - 0.17 * i as f64).collect();
+    // plus then plus, plus then minus, and a minus that loses rank
+    for (p1, p2, scale) in [(true, true, 1.0), (true, false, 1.0), (false, true, 40.0)] {
+        let w1: Vec<f64> = v1.iter().map(|x| x * scale).collect();
+        let (mut l, mut x1, mut x2) = (a.clone(), w1.clone(), v2.clone());
+        let r1 = chol_update(&mut l, &mut x1, n, p1);
+        let r2 = chol_update(&mut l, &mut x2, n, p2);
+        let (mut lp, mut y1, mut y2) = (a.clone(), w1.clone(), v2.clone());
+        assert_eq!(chol_update2(&mut lp, &mut y1, p1, &mut y2, p2, n), (r1, r2));
+        let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+        assert_eq!(bits(&l), bits(&lp));
+        assert_eq!((bits(&x1), bits(&x2)), (bits(&y1), bits(&y2)));
+    }
+}
