@@ -97,16 +97,21 @@ impl Lib {
 /// DT_RPATH (not RUNPATH) pins the library: cargo's LD_LIBRARY_PATH cannot swap it.
 pub fn compile_c(srcs: &[PathBuf], name: &str, lib: Lib) -> PathBuf {
     let out = work_dir("bin").join(format!("{name}-{}", lib.name()));
-    let mut cmd = Command::new("gcc");
-    cmd.args([
+    let opts = [
         "-std=c11",
         "-O2",
         "-Wall",
         "-Werror=implicit-function-declaration",
-        "-o",
-    ])
-    .arg(&out);
-    cmd.args(srcs);
+    ];
+    gcc(&out, &opts, srcs, lib, &[]);
+    out
+}
+
+/// Runs gcc: `opts`, the sources, then the library (headers, -lmujoco, rpath), `after_lib`
+/// (libraries that must follow it) and libm, into `out`; fails the test with gcc's errors.
+fn gcc(out: &Path, opts: &[&str], srcs: &[PathBuf], lib: Lib, after_lib: &[&str]) {
+    let mut cmd = Command::new("gcc");
+    cmd.args(opts).arg("-o").arg(out).args(srcs);
     match lib {
         Lib::Ref => {
             require_reference();
@@ -121,17 +126,17 @@ pub fn compile_c(srcs: &[PathBuf], name: &str, lib: Lib) -> PathBuf {
             cmd.arg(format!("-Wl,--disable-new-dtags,-rpath,{}", dir.display()));
         }
     }
-    cmd.arg("-lm");
+    cmd.args(after_lib).arg("-lm");
     let o = cmd
         .output()
         .expect("gcc not found: install build-essential");
     assert!(
         o.status.success(),
-        "compiling {name} against {} failed:\n{}",
+        "compiling {} against {} failed:\n{}",
+        out.display(),
         lib.name(),
         String::from_utf8_lossy(&o.stderr)
     );
-    out
 }
 
 /// MuJoCo 4.0.0 from its PyPI wheel (mujoco-core), unpacked by capi-tests/run-all into
@@ -504,30 +509,12 @@ pub fn require_osmesa() {
 /// target/capi-tests/render.
 pub fn compile_gl(src: &str, name: &str, lib: Lib, flags: &[&str]) -> PathBuf {
     let out = work_dir("render").join(format!("{name}-{}", lib.name()));
-    let (inc, dir) = match lib {
-        Lib::Ref => (
-            "/usr/include".to_string(),
-            "/usr/lib/x86_64-linux-gnu".to_string(),
-        ),
-        _ => (
-            root().join("include").to_string_lossy().into_owned(),
-            lib_dir().to_string_lossy().into_owned(),
-        ),
-    };
-    let o = Command::new("gcc")
-        .args(["-std=gnu11", "-O1", "-Wall", "-o"])
-        .arg(&out)
-        .arg(root().join(src))
-        .args(["-I", &inc, "-L", &dir, "-lmujoco"])
-        .args(flags)
-        .arg("-lm")
-        .arg(format!("-Wl,--disable-new-dtags,-rpath,{dir}"))
-        .output()
-        .unwrap();
-    assert!(
-        o.status.success(),
-        "{src} does not compile against {lib:?}:\n{}",
-        text(&o.stderr)
+    gcc(
+        &out,
+        &["-std=gnu11", "-O1", "-Wall"],
+        &[root().join(src)],
+        lib,
+        flags,
     );
     out
 }
