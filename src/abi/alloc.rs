@@ -2,7 +2,7 @@
 //! X-macro arrays in order, each starting on a 64-byte boundary; the mjData stack apart.
 
 use super::*;
-use crate::runtime::memory::{free, malloc, malloc_zeroed};
+use crate::runtime::memory::{alloc_stack, free, free_stack, malloc, malloc_zeroed};
 use std::os::raw::c_void;
 
 const ALIGN: usize = 64;
@@ -94,7 +94,7 @@ pub fn make_model(sizes: &mjModel) -> Result<*mut mjModel, String> {
     header.vis = default_visual();
     header.stat = default_statistic();
     let m = malloc(std::mem::size_of::<mjModel>()) as *mut mjModel;
-    let buffer = malloc(nbuffer.max(1));
+    let buffer = malloc_zeroed(nbuffer.max(1));
     if m.is_null() || buffer.is_null() {
         // SAFETY: each is NULL or a fresh allocation.
         unsafe {
@@ -103,9 +103,8 @@ pub fn make_model(sizes: &mjModel) -> Result<*mut mjModel, String> {
         }
         return Err("Could not allocate mjModel".into());
     }
-    // SAFETY: fresh allocations of the right sizes.
+    // SAFETY: fresh allocations of the right sizes (the buffer zeroed).
     unsafe {
-        std::ptr::write_bytes(buffer as *mut u8, 0, nbuffer);
         header.buffer = buffer;
         m.write(header);
         set_model_pointers(&mut *m);
@@ -174,16 +173,16 @@ pub fn alloc_data(m: &mjModel) -> Result<*mut mjData, String> {
     let nstack = m.nstack.max(0) as usize;
     let d = malloc(std::mem::size_of::<mjData>()) as *mut mjData;
     // both zeroed, so that no view ever reads uninitialized memory (scratch taken unzeroed by
-    // Arena::alloc_stale, arrays before mj_resetData); calloc's pages stay untouched until the
-    // simulation reaches them
+    // Arena::alloc_stale, arrays before mj_resetData); a large stack is fresh pages, untouched
+    // until the simulation reaches them
     let buffer = malloc_zeroed(nbuffer.max(1));
-    let stack = malloc_zeroed((nstack * 8).max(1));
+    let stack = alloc_stack((nstack * 8).max(1));
     if d.is_null() || buffer.is_null() || stack.is_null() {
         // SAFETY: each is NULL or a fresh allocation.
         unsafe {
             free(d as *mut c_void);
             free(buffer);
-            free(stack);
+            free_stack(stack, (nstack * 8).max(1));
         }
         return Err("Could not allocate mjData".into());
     }
@@ -204,7 +203,10 @@ pub fn alloc_data(m: &mjModel) -> Result<*mut mjData, String> {
 pub unsafe fn delete_data(d: *mut mjData) {
     if !d.is_null() {
         free((*d).buffer);
-        free((*d).stack as *mut c_void);
+        free_stack(
+            (*d).stack as *mut c_void,
+            ((*d).nstack.max(0) as usize * 8).max(1),
+        );
         free(d as *mut c_void);
     }
 }

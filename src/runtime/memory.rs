@@ -61,6 +61,65 @@ pub fn malloc_zeroed(size: usize) -> *mut c_void {
     ptr
 }
 
+/// mjData stacks of this size and more are mapped from the kernel directly when no user
+/// allocator is set, and unmapped when freed. Most of a stack is never touched: fresh pages
+/// stay out of resident memory until the simulation reaches them, go back at once when freed,
+/// and the heap does not fragment around them (from the C heap, a reused block is cleared,
+/// which touches every page).
+const LARGE_STACK: usize = 1 << 20;
+
+/// Space before a mapped stack's first byte: the mapping's length, the alignment kept at 64.
+const MAP_HEADER: usize = 64;
+
+/// `size` zero bytes, 64-byte aligned, for an mjData stack: through the user allocator (then
+/// cleared), else mapped when large, else from the C heap.
+pub fn alloc_stack(size: usize) -> *mut c_void {
+    // SAFETY: reads the handler global, as the C library does.
+    let user = unsafe { mju_user_malloc };
+    if user.is_some() || size < LARGE_STACK {
+        return malloc_zeroed(size);
+    }
+    let ptr = size
+        .checked_add(MAP_HEADER)
+        .map_or(std::ptr::null_mut(), |len| {
+            // SAFETY: an anonymous private mapping; its first bytes hold its length for
+            // `free_stack`.
+            unsafe {
+                let base = libc::mmap(
+                    std::ptr::null_mut(),
+                    len,
+                    libc::PROT_READ | libc::PROT_WRITE,
+                    libc::MAP_PRIVATE | libc::MAP_ANONYMOUS,
+                    -1,
+                    0,
+                );
+                if base == libc::MAP_FAILED {
+                    std::ptr::null_mut()
+                } else {
+                    (base as *mut usize).write(len);
+                    (base as *mut u8).add(MAP_HEADER) as *mut c_void
+                }
+            }
+        });
+    if ptr.is_null() {
+        error("Could not allocate memory");
+    }
+    ptr
+}
+
+/// Frees a stack from `alloc_stack` of the same `size`.
+///
+/// # Safety
+/// `ptr` is NULL or came from `alloc_stack(size)` and was not freed.
+pub unsafe fn free_stack(ptr: *mut c_void, size: usize) {
+    let user = mju_user_free;
+    if ptr.is_null() || user.is_some() || size < LARGE_STACK {
+        return free(ptr);
+    }
+    let base = (ptr as *mut u8).sub(MAP_HEADER);
+    libc::munmap(base as *mut c_void, (base as *const usize).read());
+}
+
 /// Frees memory from `malloc` or `malloc_zeroed`, through the user deallocator when set.
 ///
 /// # Safety
