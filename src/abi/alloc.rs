@@ -2,7 +2,7 @@
 //! X-macro arrays in order, each starting on a 64-byte boundary; the mjData stack apart.
 
 use super::*;
-use crate::runtime::memory::{alloc_stack, free, free_stack, malloc, malloc_zeroed};
+use crate::runtime::memory::{alloc_large, free, free_large, malloc, malloc_zeroed};
 use std::os::raw::c_void;
 
 const ALIGN: usize = 64;
@@ -94,12 +94,12 @@ pub fn make_model(sizes: &mjModel) -> Result<*mut mjModel, String> {
     header.vis = default_visual();
     header.stat = default_statistic();
     let m = malloc(std::mem::size_of::<mjModel>()) as *mut mjModel;
-    let buffer = malloc_zeroed(nbuffer.max(1));
+    let buffer = alloc_large(nbuffer.max(1), true);
     if m.is_null() || buffer.is_null() {
         // SAFETY: each is NULL or a fresh allocation.
         unsafe {
             free(m as *mut c_void);
-            free(buffer);
+            free_large(buffer, nbuffer.max(1));
         }
         return Err("Could not allocate mjModel".into());
     }
@@ -125,7 +125,7 @@ mjmodel_ints!(copy_int_fields);
 /// `m` is NULL or came from `make_model`.
 pub unsafe fn delete_model(m: *mut mjModel) {
     if !m.is_null() {
-        free((*m).buffer);
+        free_large((*m).buffer, (*m).nbuffer.max(1) as usize);
         free(m as *mut c_void);
     }
 }
@@ -176,13 +176,13 @@ pub fn alloc_data(m: &mjModel) -> Result<*mut mjData, String> {
     // Arena::alloc_stale, arrays before mj_resetData); a large stack is fresh pages, untouched
     // until the simulation reaches them
     let buffer = malloc_zeroed(nbuffer.max(1));
-    let stack = alloc_stack((nstack * 8).max(1));
+    let stack = alloc_large((nstack * 8).max(1), false);
     if d.is_null() || buffer.is_null() || stack.is_null() {
         // SAFETY: each is NULL or a fresh allocation.
         unsafe {
             free(d as *mut c_void);
             free(buffer);
-            free_stack(stack, (nstack * 8).max(1));
+            free_large(stack, (nstack * 8).max(1));
         }
         return Err("Could not allocate mjData".into());
     }
@@ -203,7 +203,7 @@ pub fn alloc_data(m: &mjModel) -> Result<*mut mjData, String> {
 pub unsafe fn delete_data(d: *mut mjData) {
     if !d.is_null() {
         free((*d).buffer);
-        free_stack(
+        free_large(
             (*d).stack as *mut c_void,
             ((*d).nstack.max(0) as usize * 8).max(1),
         );

@@ -60,10 +60,16 @@ fn rgb3(c: &[f64; 3]) -> [u8; 3] {
     [byte(c[0]), byte(c[1]), byte(c[2])]
 }
 
-/// Sigmoid blend of two colors by `pos` in (-1, 1).
-fn interp(rgb1: &[f64; 3], rgb2: &[f64; 3], pos: f64) -> [u8; 3] {
+/// The odd part of 2.2.2's sigmoid blend by `pos` in (-1, 1): exactly negated for -pos (square,
+/// root and divisions keep the sign symmetric), so one evaluation serves both.
+fn sigmoid(pos: f64) -> f64 {
     let correction = 1.0 / 2f64.sqrt();
-    let alpha = (0.5 * (1.0 + pos / (1.0 + pos * pos).sqrt() / correction)).clamp(0.0, 1.0);
+    pos / (1.0 + pos * pos).sqrt() / correction
+}
+
+/// The color at blend weight 0.5 * (1 + odd), clamped to [0, 1].
+fn blend(rgb1: &[f64; 3], rgb2: &[f64; 3], odd: f64) -> [u8; 3] {
+    let alpha = (0.5 * (1.0 + odd)).clamp(0.0, 1.0);
     let mut out = [0u8; 3];
     for j in 0..3 {
         out[j] = byte(alpha * rgb1[j] + (1.0 - alpha) * rgb2[j]);
@@ -125,6 +131,48 @@ fn marks(img: &mut [u8], t: &Texture, width: usize, height: usize, faces: usize,
     }
 }
 
+/// The gradient skybox: sides blend by elevation, up and down by angle from the pole. Each row
+/// goes in passes over its pixels (roots and divisions, then asin and acos, then blends), so
+/// that the arithmetic runs two pixels per instruction; every value is computed as per pixel.
+fn gradient_cube(img: &mut [u8], t: &Texture, width: usize) {
+    let face = 3 * width * width;
+    let half_pi = 0.5 * std::f64::consts::PI;
+    let xx: Vec<f64> = (0..width)
+        .map(|c| {
+            let x = (2 * c) as f64 / (width as f64 - 1.0) - 1.0;
+            1.0 + x * x
+        })
+        .collect();
+    let (mut side, mut up) = (vec![0.0; width], vec![0.0; width]);
+    for r in 0..width {
+        let y = 1.0 - (2 * r) as f64 / (width as f64 - 1.0);
+        for ((s, u), a) in side.iter_mut().zip(up.iter_mut()).zip(&xx) {
+            let norm = (a + y * y).sqrt();
+            *s = y / norm;
+            *u = 1.0 / norm;
+        }
+        for (s, u) in side.iter_mut().zip(up.iter_mut()) {
+            *s = s.asin();
+            *u = u.acos();
+        }
+        for (s, u) in side.iter_mut().zip(up.iter_mut()) {
+            *s = sigmoid(*s / half_pi);
+            // -elup's weight: 1 + (-q) is 1 - q exactly
+            *u = sigmoid(1.0 - *u / half_pi);
+        }
+        for c in 0..width {
+            let k = 3 * (r * width + c);
+            let s = blend(&t.rgb1, &t.rgb2, side[c]);
+            for f in [0, 1, 4, 5] {
+                img[f * face + k..f * face + k + 3].copy_from_slice(&s);
+            }
+            let (u, d) = (2 * face + k, 3 * face + k);
+            img[u..u + 3].copy_from_slice(&blend(&t.rgb1, &t.rgb2, up[c]));
+            img[d..d + 3].copy_from_slice(&blend(&t.rgb1, &t.rgb2, -up[c]));
+        }
+    }
+}
+
 /// Pixels (RGB bytes) of a builtin texture; `height` is the full height (6 faces for cubes).
 pub fn builtin(t: &Texture, width: usize, height: usize, rng: &mut CRand) -> Vec<u8> {
     let mut img = vec![0u8; 3 * width * height];
@@ -134,12 +182,16 @@ pub fn builtin(t: &Texture, width: usize, height: usize, rng: &mut CRand) -> Vec
     if t.kind == 0 {
         match t.builtin {
             1 => {
+                // a row at a time: roots and sigmoids first, two pixels per instruction
+                let mut q = vec![0.0; width];
                 for r in 0..height {
-                    for c in 0..width {
+                    let y = 1.0 - pixel(r, height);
+                    for (c, q) in q.iter_mut().enumerate() {
                         let x = pixel(c, width) - 1.0;
-                        let y = 1.0 - pixel(r, height);
-                        let pos = 2.0 * (x * x + y * y).sqrt() - 1.0;
-                        set(&mut img, width, r, c, interp(&t.rgb2, &t.rgb1, pos));
+                        *q = sigmoid(2.0 * (x * x + y * y).sqrt() - 1.0);
+                    }
+                    for (c, &q) in q.iter().enumerate() {
+                        set(&mut img, width, r, c, blend(&t.rgb2, &t.rgb1, q));
                     }
                 }
             }
@@ -151,36 +203,7 @@ pub fn builtin(t: &Texture, width: usize, height: usize, rng: &mut CRand) -> Vec
     } else {
         let face = 3 * width * width;
         match t.builtin {
-            1 => {
-                for r in 0..width {
-                    for c in 0..width {
-                        let x = pixel(c, width) - 1.0;
-                        let y = 1.0 - pixel(r, width);
-                        let norm = (1.0 + x * x + y * y).sqrt();
-                        let half_pi = 0.5 * std::f64::consts::PI;
-                        let elside = (y / norm).asin() / half_pi;
-                        let elup = 1.0 - (1.0 / norm).acos() / half_pi;
-                        let side = interp(&t.rgb1, &t.rgb2, elside);
-                        for f in [0, 1, 4, 5] {
-                            set(&mut img[f * face..], width, r, c, side);
-                        }
-                        set(
-                            &mut img[2 * face..],
-                            width,
-                            r,
-                            c,
-                            interp(&t.rgb1, &t.rgb2, elup),
-                        );
-                        set(
-                            &mut img[3 * face..],
-                            width,
-                            r,
-                            c,
-                            interp(&t.rgb1, &t.rgb2, -elup),
-                        );
-                    }
-                }
-            }
+            1 => gradient_cube(&mut img, t, width),
             2 => {
                 for f in 0..6 {
                     let (a, b) = if f < 4 { (c1, c2) } else { (c2, c1) };

@@ -117,6 +117,13 @@ pub fn reset_data(m: &Model, d: &mut Data) {
     reset_state(m, d);
 }
 
+/// mj_resetData on data whose arrays are all zero already (fresh from `alloc_data`): the same
+/// result without clearing them again, which would touch every page of a large buffer.
+pub fn reset_fresh_data(m: &Model, d: &mut Data) {
+    clear_header(d);
+    reset_state(m, d);
+}
+
 /// Clears the header: stack use, diagnostics, sizes, time, energy.
 pub fn clear_header(d: &mut Data) {
     d.arena.reset_peak();

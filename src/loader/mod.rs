@@ -9,11 +9,11 @@ pub mod vfs;
 pub mod xml;
 
 use crate::abi::owned::{DataBox, ModelBox};
-use crate::engine::support::reset_data;
+use crate::engine::support::reset_fresh_data;
 
-/// Data for `m`, reset (mj_makeData).
+/// Data for `m`, reset (mj_makeData); its arrays come zeroed from the allocation.
 pub fn new_data(m: &ModelBox) -> Result<DataBox, String> {
     let mut d = DataBox::new(m)?;
-    reset_data(&m.view(), &mut d.view(m));
+    reset_fresh_data(&m.view(), &mut d.view(m));
     Ok(d)
 }

@@ -61,35 +61,36 @@ pub fn malloc_zeroed(size: usize) -> *mut c_void {
     ptr
 }
 
-/// mjData stacks of this size and more are mapped from the kernel directly when no user
-/// allocator is set, and unmapped when freed. Most of a stack is never touched: fresh pages
-/// stay out of resident memory until the simulation reaches them, go back at once when freed,
-/// and the heap does not fragment around them (from the C heap, a reused block is cleared,
-/// which touches every page).
-const LARGE_STACK: usize = 1 << 20;
+/// mjModel buffers and mjData stacks of this size and more are mapped from the kernel
+/// directly when no user allocator is set, and unmapped when freed: their pages go back at
+/// once and the heap does not fragment around them (a heap's reused block is cleared, which
+/// touches every page, and freeing it returns nothing). Most of a stack is never touched and
+/// stays out of resident memory; a model buffer is filled whole, so its pages come mapped.
+const LARGE_BLOCK: usize = 1 << 20;
 
-/// Space before a mapped stack's first byte: the mapping's length, the alignment kept at 64.
+/// Space before a mapped block's first byte: the mapping's length, the alignment kept at 64.
 const MAP_HEADER: usize = 64;
 
-/// `size` zero bytes, 64-byte aligned, for an mjData stack: through the user allocator (then
-/// cleared), else mapped when large, else from the C heap.
-pub fn alloc_stack(size: usize) -> *mut c_void {
+/// `size` zero bytes: through the user allocator (then cleared), else mapped when large
+/// (64-byte aligned; `populate`: its pages in at once), else from the C heap.
+pub fn alloc_large(size: usize, populate: bool) -> *mut c_void {
+    let populate = if populate { libc::MAP_POPULATE } else { 0 };
     // SAFETY: reads the handler global, as the C library does.
     let user = unsafe { mju_user_malloc };
-    if user.is_some() || size < LARGE_STACK {
+    if user.is_some() || size < LARGE_BLOCK {
         return malloc_zeroed(size);
     }
     let ptr = size
         .checked_add(MAP_HEADER)
         .map_or(std::ptr::null_mut(), |len| {
             // SAFETY: an anonymous private mapping; its first bytes hold its length for
-            // `free_stack`.
+            // `free_large`.
             unsafe {
                 let base = libc::mmap(
                     std::ptr::null_mut(),
                     len,
                     libc::PROT_READ | libc::PROT_WRITE,
-                    libc::MAP_PRIVATE | libc::MAP_ANONYMOUS,
+                    libc::MAP_PRIVATE | libc::MAP_ANONYMOUS | populate,
                     -1,
                     0,
                 );
@@ -107,13 +108,13 @@ pub fn alloc_stack(size: usize) -> *mut c_void {
     ptr
 }
 
-/// Frees a stack from `alloc_stack` of the same `size`.
+/// Frees a block from `alloc_large` of the same `size`.
 ///
 /// # Safety
-/// `ptr` is NULL or came from `alloc_stack(size)` and was not freed.
-pub unsafe fn free_stack(ptr: *mut c_void, size: usize) {
+/// `ptr` is NULL or came from `alloc_large(size, _)` and was not freed.
+pub unsafe fn free_large(ptr: *mut c_void, size: usize) {
     let user = mju_user_free;
-    if ptr.is_null() || user.is_some() || size < LARGE_STACK {
+    if ptr.is_null() || user.is_some() || size < LARGE_BLOCK {
         return free(ptr);
     }
     let base = (ptr as *mut u8).sub(MAP_HEADER);

@@ -217,13 +217,25 @@ fn sweep_and_prune(
     if entries.iter().any(|e| key(e).is_nan()) {
         merge_sort(entries, active, &|x, y| key(x) <= key(y));
     } else {
-        entries.sort_unstable_by(|x, y| {
-            key(x)
-                .partial_cmp(&key(y))
-                .unwrap_or(std::cmp::Ordering::Equal)
-                .then((x & 0xFFFF).cmp(&(y & 0xFFFF)))
-                .then(ismax(*x).cmp(&ismax(*y)))
-        });
+        // as integers: the key's order-preserving bits (-0 as +0, they compare equal), then
+        // the body, then the upper end after the lower; back to the body (+MAX) once sorted
+        for e in entries.iter_mut() {
+            let bits = match (*e >> 32) as u32 {
+                0x8000_0000 => 0,
+                b => b,
+            };
+            let total = if bits & 0x8000_0000 != 0 {
+                !bits
+            } else {
+                bits | 0x8000_0000
+            };
+            let low = ismax(*e);
+            *e = (u64::from(total) << 32) | ((low & 0xFFFF) << 1) | (low >> 16);
+        }
+        entries.sort_unstable();
+        for e in entries.iter_mut() {
+            *e = ((*e & 0xFFFF_FFFF) >> 1) + (*e & 1) * MAX;
+        }
     }
 
     let mut nactive = 0;
