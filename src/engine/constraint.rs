@@ -1026,14 +1026,17 @@ pub fn constraint_update(
             i += dim;
             continue;
         }
-        if jar[i] >= 0.0 {
-            force[i] = 0.0;
-            state[i] = mjCNSTRSTATE_SATISFIED as i32;
+        // chosen without branches (states flip between iterations and mispredict)
+        let satisfied = jar[i] >= 0.0;
+        force[i] = if satisfied { 0.0 } else { force[i] };
+        state[i] = if satisfied {
+            mjCNSTRSTATE_SATISFIED as i32
         } else {
-            if want_cost {
-                s += 0.5 * dd[i] * jar[i] * jar[i];
-            }
-            state[i] = mjCNSTRSTATE_QUADRATIC as i32;
+            mjCNSTRSTATE_QUADRATIC as i32
+        };
+        if want_cost {
+            let sum = s + 0.5 * dd[i] * jar[i] * jar[i];
+            s = if satisfied { s } else { sum };
         }
         i += 1;
     }

@@ -534,9 +534,13 @@ fn eval(d: &Data, c: &mut Ctx, p: &mut Pnt) {
     let mut i = ne + nf;
     while i < nefc {
         if d.efc_type[i] != ELLIPTIC {
-            let x = c.jaref[i] + alpha * c.jv[i];
-            if x < 0.0 {
-                add_to3(&mut total, &c.quad[3 * i..]);
+            // active rows add their quadratic; chosen without a branch (the sign of x changes
+            // along the line search and mispredicts), the same sums
+            let active = c.jaref[i] + alpha * c.jv[i] < 0.0;
+            let q = &c.quad[3 * i..3 * i + 3];
+            for k in 0..3 {
+                let sum = total[k] + q[k];
+                total[k] = if active { sum } else { total[k] };
             }
             i += 1;
             continue;
