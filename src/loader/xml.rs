@@ -6,7 +6,7 @@ use super::{new_data, setconst::set_const};
 use crate::abi::owned::{blank_model_header, DataBox, ModelBox};
 use crate::abi::*;
 use crate::compiler;
-use crate::engine::{forward, support};
+use crate::engine::forward;
 use crate::runtime;
 use crate::xml::{include, reader, schema, tree, urdf, writer};
 use std::sync::Mutex;
@@ -70,10 +70,9 @@ fn parse(
 /// simulation, singular inertia) reach the caller's capture, and the first engine error
 /// (raised through mju_error by a callback, or returned) rejects the model. A feature this
 /// engine lacks ("not implemented") does not stop a model from loading: the user meets it at
-/// the first step.
+/// the first step. `d` is fresh (reset) data.
 fn test_step(m: &ModelBox, d: &mut DataBox) -> Result<(), String> {
     let (stepped, raised) = runtime::capture_errors(|| {
-        support::reset_data(&m.view(), &mut d.view(m));
         runtime::guard::catch("mj_step", || forward::step(&m.view(), &mut d.view(m)))
     });
     let returned = match stepped {
@@ -91,18 +90,22 @@ fn test_step(m: &ModelBox, d: &mut DataBox) -> Result<(), String> {
 /// statistics overrides, reference checks and the test step.
 fn finish_compile(
     m: &mut ModelBox,
-    d: &mut DataBox,
+    mut d: DataBox,
     compiled: &compiler::Compiled,
 ) -> Result<(), String> {
-    set_const(m, d).map_err(|e| format!("Error: engine error: {e}"))?;
+    set_const(m, &mut d).map_err(|e| format!("Error: engine error: {e}"))?;
     compiler::auto_spring_damper(compiled, &mut m.view_mut());
-    super::lengthrange::compile_length_ranges(m, d, &compiled.lropt)
+    super::lengthrange::compile_length_ranges(m, &mut d, &compiled.lropt)
         .map_err(|e| format!("Error: {e}"))?;
     compiler::finish(compiled, m.stat_mut());
     if let Some(msg) = validate::validate_references(m.view()) {
         return Err(format!("Error: {msg}"));
     }
-    test_step(m, d).map_err(|e| format!("Error: engine error: {e}"))
+    // the test step starts from fresh data, the reset state: clearing the used data would
+    // touch every page of its buffer, most of which the step never reaches
+    drop(d);
+    let mut d = new_data(m).map_err(|_| "Error: could not create mjData".to_string())?;
+    test_step(m, &mut d).map_err(|e| format!("Error: engine error: {e}"))
 }
 
 /// Compiles a parsed model; warnings meanwhile go to the caller's capture.
@@ -115,9 +118,9 @@ fn compile(spec: compiler::spec::ModelSpec) -> Result<ModelBox, String> {
     *m.vis_mut() = compiled.visual;
     compiler::fill(&compiled, &mut m.view_mut());
     compiler::release_bulk(&mut compiled);
-    // as 2.2.2's compiler: one mjData serves mj_setConst, the length ranges and the test step
-    let mut d = new_data(&m).map_err(|_| "Error: could not create mjData".to_string())?;
-    finish_compile(&mut m, &mut d, &compiled)?;
+    // as 2.2.2's compiler: one mjData serves mj_setConst and the length ranges
+    let d = new_data(&m).map_err(|_| "Error: could not create mjData".to_string())?;
+    finish_compile(&mut m, d, &compiled)?;
     Ok(m)
 }
 
