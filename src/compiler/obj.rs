@@ -155,10 +155,11 @@ fn fix_index(idx: i32, n: usize) -> Option<i32> {
     }
 }
 
-/// One `v[/vt][/vn]` group; `pos` moves past it.
+/// One `v[/vt][/vn]` group; `pos` moves past it (tinyobjloader reads the line as a C string:
+/// a NUL byte ends it).
 fn corner(line: &[u8], pos: &mut usize, n: [usize; 3]) -> Option<Corner> {
     let skip = |p: &mut usize| {
-        while *p < line.len() && !matches!(line[*p], b'/' | b' ' | b'\t' | b'\r') {
+        while *p < line.len() && !matches!(line[*p], b'/' | b' ' | b'\t' | b'\r' | 0) {
             *p += 1;
         }
     };
@@ -433,5 +434,12 @@ mod tests {
         let t: Vec<[i32; 3]> = o.triangles.iter().map(|t| t.map(|c| c.v)).collect();
         assert_eq!(t, vec![[0, 1, 2], [0, 2, 3]]);
         assert!(read(b"v 0 0 0\nf 0 1 2\n").is_err());
+    }
+
+    #[test]
+    fn a_nul_byte_ends_the_line() {
+        let o = read(b"v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1/1/3\0\0\x80\x7f/3 2 3\nf 1 2 3\n").unwrap();
+        let t: Vec<[i32; 3]> = o.triangles.iter().map(|t| t.map(|c| c.v)).collect();
+        assert_eq!(t, vec![[0, 1, 2]]);
     }
 }
