@@ -131,6 +131,12 @@ fn marks(img: &mut [u8], t: &Texture, width: usize, height: usize, faces: usize,
     }
 }
 
+/// Pixel k of n at 2k/(n-1), evaluated as the C source does: integer product, then a double
+/// division.
+fn pixel(k: usize, n: usize) -> f64 {
+    (2 * k) as f64 / (n as f64 - 1.0)
+}
+
 /// The gradient skybox: sides blend by elevation, up and down by angle from the pole. Each row
 /// goes in passes over its pixels (roots and divisions, then asin and acos, then blends), so
 /// that the arithmetic runs two pixels per instruction; every value is computed as per pixel.
@@ -139,13 +145,13 @@ fn gradient_cube(img: &mut [u8], t: &Texture, width: usize) {
     let half_pi = 0.5 * std::f64::consts::PI;
     let xx: Vec<f64> = (0..width)
         .map(|c| {
-            let x = (2 * c) as f64 / (width as f64 - 1.0) - 1.0;
+            let x = pixel(c, width) - 1.0;
             1.0 + x * x
         })
         .collect();
     let (mut side, mut up) = (vec![0.0; width], vec![0.0; width]);
     for r in 0..width {
-        let y = 1.0 - (2 * r) as f64 / (width as f64 - 1.0);
+        let y = 1.0 - pixel(r, width);
         for ((s, u), a) in side.iter_mut().zip(up.iter_mut()).zip(&xx) {
             let norm = (a + y * y).sqrt();
             *s = y / norm;
@@ -177,8 +183,6 @@ fn gradient_cube(img: &mut [u8], t: &Texture, width: usize) {
 pub fn builtin(t: &Texture, width: usize, height: usize, rng: &mut CRand) -> Vec<u8> {
     let mut img = vec![0u8; 3 * width * height];
     let (c1, c2) = (rgb3(&t.rgb1), rgb3(&t.rgb2));
-    // 2*k/(n-1) evaluated as the C source does: integer product, then a double division
-    let pixel = |k: usize, n: usize| (2 * k) as f64 / (n as f64 - 1.0);
     if t.kind == 0 {
         match t.builtin {
             1 => {

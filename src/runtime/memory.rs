@@ -68,11 +68,9 @@ pub fn malloc_zeroed(size: usize) -> *mut c_void {
 /// stays out of resident memory; a model buffer is filled whole, so its pages come mapped.
 const LARGE_BLOCK: usize = 1 << 20;
 
-/// Space before a mapped block's first byte: the mapping's length first. 2 KB + 64 keeps the
-/// 64-byte alignment and starts the arrays mid-page, away from the page offsets at which the
-/// heap's large blocks start (mapped at offset 64, cheetah stepped 2-3% slower, likely
-/// from 4K aliasing between the model's and the data's arrays).
-const MAP_HEADER: usize = 2048 + 64;
+/// Offset of a mapped block's first byte in its mapping: 2 KB + 64 keeps the 64-byte alignment
+/// and starts the arrays mid-page (at offset 64, cheetah stepped 2-3% slower).
+const MAP_OFFSET: usize = 2048 + 64;
 
 /// `size` zero bytes: through the user allocator (then cleared), else mapped when large
 /// (64-byte aligned; `populate`: its pages in at once), else from the C heap.
@@ -84,10 +82,9 @@ pub fn alloc_large(size: usize, populate: bool) -> *mut c_void {
         return malloc_zeroed(size);
     }
     let ptr = size
-        .checked_add(MAP_HEADER)
+        .checked_add(MAP_OFFSET)
         .map_or(std::ptr::null_mut(), |len| {
-            // SAFETY: an anonymous private mapping; its first bytes hold its length for
-            // `free_large`.
+            // SAFETY: an anonymous private mapping of `len` bytes.
             unsafe {
                 let base = libc::mmap(
                     std::ptr::null_mut(),
@@ -100,8 +97,7 @@ pub fn alloc_large(size: usize, populate: bool) -> *mut c_void {
                 if base == libc::MAP_FAILED {
                     std::ptr::null_mut()
                 } else {
-                    (base as *mut usize).write(len);
-                    (base as *mut u8).add(MAP_HEADER) as *mut c_void
+                    (base as *mut u8).add(MAP_OFFSET) as *mut c_void
                 }
             }
         });
@@ -120,8 +116,8 @@ pub unsafe fn free_large(ptr: *mut c_void, size: usize) {
     if ptr.is_null() || user.is_some() || size < LARGE_BLOCK {
         return free(ptr);
     }
-    let base = (ptr as *mut u8).sub(MAP_HEADER);
-    libc::munmap(base as *mut c_void, (base as *const usize).read());
+    let base = (ptr as *mut u8).sub(MAP_OFFSET);
+    libc::munmap(base as *mut c_void, size + MAP_OFFSET);
 }
 
 /// Frees memory from `malloc` or `malloc_zeroed`, through the user deallocator when set.
