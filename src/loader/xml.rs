@@ -130,8 +130,10 @@ pub fn load(filename: &str, vfs: Option<&Vfs>) -> Result<Loaded, String> {
     let (mjcf, spec) = parse(filename, vfs)?;
     // from here on, as in 2.2.2's compiler, warnings go to the error buffer
     let (model, warning) = runtime::capture_warnings(|| compile(spec));
+    let model = model?;
+    runtime::memory::release_free_heap(model.raw().nbuffer.max(0) as usize);
     Ok(Loaded {
-        model: model?,
+        model,
         warning: warning.unwrap_or_default(),
         mjcf,
     })

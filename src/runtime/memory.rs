@@ -134,3 +134,21 @@ pub unsafe fn free(ptr: *mut c_void) {
         libc::free(ptr)
     }
 }
+
+/// Models of this size and more come from loads whose temporaries (meshes, skins, textures)
+/// are worth handing back; smaller loads leave theirs on the heap for the next load to reuse.
+const LARGE_LOAD: usize = 16 << 20;
+
+/// After loading a model of `model_bytes`, hands the C heap's free pages back to the kernel
+/// when the model is large: the compiler's temporaries are freed by then, and otherwise they
+/// stay resident and grow over load/free rounds. The next load maps its pages in again.
+pub fn release_free_heap(model_bytes: usize) {
+    if model_bytes < LARGE_LOAD {
+        return;
+    }
+    #[cfg(all(target_os = "linux", target_env = "gnu"))]
+    // SAFETY: glibc's trim only returns unused heap pages; no block is moved or freed.
+    unsafe {
+        libc::malloc_trim(0);
+    }
+}
