@@ -1,6 +1,7 @@
 //! Memory of `mjModel` and `mjData` laid out as 2.2.2 lays it out: one buffer per struct, the
 //! X-macro arrays in order, each starting on a 64-byte boundary; the mjData stack apart.
 
+use super::view::ViewSlot;
 use super::*;
 use crate::runtime::memory::{alloc_large, free, free_large, malloc, malloc_zeroed};
 use std::os::raw::c_void;
@@ -175,7 +176,7 @@ pub fn alloc_data(m: &mjModel) -> Result<*mut mjData, String> {
     // both zeroed, so that no view ever reads uninitialized memory (scratch taken unzeroed by
     // Arena::alloc_stale, arrays before mj_resetData); a large stack is fresh pages, untouched
     // until the simulation reaches them
-    let buffer = malloc_zeroed(nbuffer.max(1));
+    let buffer = malloc_zeroed(ViewSlot::offset(nbuffer) + std::mem::size_of::<ViewSlot>());
     let stack = alloc_large((nstack * 8).max(1), false);
     if d.is_null() || buffer.is_null() || stack.is_null() {
         // SAFETY: each is NULL or a fresh allocation.
@@ -194,6 +195,7 @@ pub fn alloc_data(m: &mjModel) -> Result<*mut mjData, String> {
         (*d).buffer = buffer;
         (*d).stack = stack as *mut f64;
         set_data_pointers(m, &mut *d);
+        ViewSlot::init(&*d);
     }
     Ok(d)
 }
@@ -235,6 +237,7 @@ pub unsafe fn copy_data(
     (*dest).buffer = buffer;
     (*dest).stack = stack;
     set_data_pointers(m, &mut *dest);
+    ViewSlot::clear(&*dest);
     std::ptr::copy_nonoverlapping(
         src.buffer as *const u8,
         buffer as *mut u8,

@@ -75,6 +75,8 @@ mjmodel_pointers!(model_views);
 macro_rules! data_views {
     ($(($t:ident, $name:ident, $d1:ident, $($d2:tt)+)),* $(,)?) => {
         /// Writable view of simulation data: every array, the header scalars and the stack.
+        /// (`repr(C)`: a built view is kept as bytes with its data, see `ViewSlot`.)
+        #[repr(C)]
         pub struct Data<'a> {
             /// Header: scalars, diagnostics, warnings (pointers in it must not be changed).
             pub raw: &'a mut mjData,
@@ -86,10 +88,35 @@ macro_rules! data_views {
         impl<'a> Data<'a> {
             /// # Safety
             /// `d` must come from `mj_makeData(m)` for this model.
+            #[inline(always)]
             pub unsafe fn new(m: &mjModel, d: &'a mut mjData) -> Self {
+                let slot = ViewSlot::of(d);
+                if (*slot).holds(m, d) {
+                    // the kept view's arrays, a new arena over the stack as it is now
+                    let mut view: Self = std::ptr::read((*slot).image.as_ptr().cast());
+                    std::ptr::write(&mut view.arena, Self::arena(d));
+                    return view;
+                }
+                Self::build_and_keep(m, d, slot)
+            }
+
+            #[inline(never)]
+            unsafe fn build_and_keep(m: &mjModel, d: &'a mut mjData, slot: *mut ViewSlot) -> Self {
+                let view = Self::build(m, d);
+                (*slot).keep(m, &view);
+                view
+            }
+
+            /// The arena over the free part of `d`'s stack.
+            #[inline(always)]
+            unsafe fn arena(d: &mjData) -> Arena<'a> {
                 let pstack = d.pstack.clamp(0, d.nstack) as usize;
                 let stack = view_mut(d.stack, d.nstack.max(0) as usize);
-                let arena = Arena { free: &mut stack[pstack..], used: pstack, peak: pstack };
+                Arena { free: &mut stack[pstack..], used: pstack, peak: pstack }
+            }
+
+            unsafe fn build(m: &mjModel, d: &'a mut mjData) -> Self {
+                let arena = Self::arena(d);
                 $(let $name = array_view(d.$name, row_len!(m, $d1, $($d2)+));)*
                 Data { raw: d, arena, $($name,)* }
             }
@@ -141,6 +168,72 @@ macro_rules! data_ref_views {
     };
 }
 mjdata_pointers!(data_ref_views);
+
+/// Room after an `mjData`'s array buffer (`alloc_data` makes it) for the view `Data::new` last
+/// built of it: building one computes every array's length (a fifth of an empty model's
+/// step), copying the kept one is a block move. The view is kept for one model; `owner` and
+/// `buffer` say the room is this data's own (a struct copied by value has another address).
+#[repr(C)]
+pub struct ViewSlot {
+    owner: *const mjData,
+    buffer: *const std::os::raw::c_void,
+    model: *const mjModel,
+    image: std::mem::MaybeUninit<Data<'static>>,
+}
+
+impl ViewSlot {
+    /// Offset of the slot from the start of a buffer of `nbuffer` bytes.
+    pub fn offset(nbuffer: usize) -> usize {
+        nbuffer.max(1).div_ceil(64) * 64
+    }
+
+    /// The slot of `d`.
+    ///
+    /// # Safety
+    /// `d` came from `alloc_data`.
+    unsafe fn of(d: &mjData) -> *mut ViewSlot {
+        (d.buffer as *mut u8).add(Self::offset(d.nbuffer.max(0) as usize)) as *mut ViewSlot
+    }
+
+    /// Marks the slot of fresh data `d` as its own and empty.
+    ///
+    /// # Safety
+    /// `d` came from `alloc_data`, which made room for the slot.
+    pub unsafe fn init(d: &mjData) {
+        let slot = Self::of(d);
+        (*slot).owner = d;
+        (*slot).buffer = d.buffer;
+        (*slot).model = std::ptr::null();
+    }
+
+    /// Forgets the kept view (the data's header was overwritten).
+    ///
+    /// # Safety
+    /// As `init`.
+    pub unsafe fn clear(d: &mjData) {
+        Self::init(d)
+    }
+
+    fn owns(&self, d: &mjData) -> bool {
+        std::ptr::eq(self.owner, d) && std::ptr::eq(self.buffer, d.buffer)
+    }
+
+    fn holds(&self, m: &mjModel, d: &mjData) -> bool {
+        self.owns(d) && std::ptr::eq(self.model, m)
+    }
+
+    /// Keeps a bitwise copy of `view` (never dropped; read back by `Data::new`).
+    unsafe fn keep(&mut self, m: &mjModel, view: &Data) {
+        if self.owns(view.raw) {
+            std::ptr::copy_nonoverlapping(
+                view as *const Data as *const u8,
+                self.image.as_mut_ptr() as *mut u8,
+                std::mem::size_of::<Data>(),
+            );
+            self.model = m;
+        }
+    }
+}
 
 impl Data<'_> {
     /// Runs `f` with this data and a scratch arena scope taken from its stack; everything `f`
