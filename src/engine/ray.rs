@@ -6,6 +6,13 @@ use super::{Data, EngineError, Model, MINVAL};
 use crate::abi::mjtGeom_::*;
 use crate::math::{norm3, Mat3, Vec3};
 
+const PLANE: i32 = mjGEOM_PLANE as i32;
+const SPHERE: i32 = mjGEOM_SPHERE as i32;
+const CAPSULE: i32 = mjGEOM_CAPSULE as i32;
+const ELLIPSOID: i32 = mjGEOM_ELLIPSOID as i32;
+const CYLINDER: i32 = mjGEOM_CYLINDER as i32;
+const BOX: i32 = mjGEOM_BOX as i32;
+
 /// Number of geom groups (mjNGROUP).
 const NGROUP: i32 = 6;
 
@@ -77,10 +84,53 @@ fn sphere(pos: &Vec3, radius: f64, pnt: &Vec3, vec: &Vec3) -> f64 {
     quadratic(a, b, c).0
 }
 
+/// Does the ray meet the sphere at a non-negative distance: `sphere(..) >= 0` without its
+/// divisions. Its larger root decides (the smaller never exceeds it), and that root's sign is
+/// its numerator's when the divisor `a` is finite; otherwise the root is computed as there.
+#[inline(always)]
+fn meets_sphere(pos: &Vec3, radius: f64, pnt: &Vec3, vec: &Vec3) -> bool {
+    let dif = [pnt[0] - pos[0], pnt[1] - pos[1], pnt[2] - pos[2]];
+    let a = vec[0] * vec[0] + vec[1] * vec[1] + vec[2] * vec[2];
+    let b = vec[0] * dif[0] + vec[1] * dif[1] + vec[2] * dif[2];
+    let c = dif[0] * dif[0] + dif[1] * dif[1] + dif[2] * dif[2] - radius * radius;
+    let det = b * b - a * c;
+    if det < MINVAL {
+        return false;
+    }
+    let num = -b + det.sqrt();
+    if num > 0.0 && a < f64::INFINITY {
+        true
+    } else {
+        num / a >= 0.0
+    }
+}
+
+/// `meets_sphere` for a ray whose `a` (its direction's squared length) lies in [1e-300, 1e280],
+/// without branching on the outcome: there a root's numerator below -1e-40 divides to a
+/// negative root, so the numerator's sign decides but in that sliver near zero.
+#[inline(always)]
+fn meets_sphere_sure(pos: &Vec3, radius: f64, pnt: &Vec3, vec: &Vec3) -> bool {
+    let dif = [pnt[0] - pos[0], pnt[1] - pos[1], pnt[2] - pos[2]];
+    let a = vec[0] * vec[0] + vec[1] * vec[1] + vec[2] * vec[2];
+    let b = vec[0] * dif[0] + vec[1] * dif[1] + vec[2] * dif[2];
+    let c = dif[0] * dif[0] + dif[1] * dif[1] + dif[2] * dif[2] - radius * radius;
+    let det = b * b - a * c;
+    let num = -b + det.sqrt();
+    if (num > -1e-40) & (num < 0.0) {
+        return det >= MINVAL && num / a >= 0.0;
+    }
+    (det >= MINVAL) & (num >= 0.0)
+}
+
 fn capsule(pos: &Vec3, mat: &Mat3, size: &[f64], pnt: &Vec3, vec: &Vec3) -> f64 {
-    if sphere(pos, size[0] + size[1], pnt, vec) < 0.0 {
+    if !meets_sphere(pos, size[0] + size[1], pnt, vec) {
         return -1.0;
     }
+    capsule_inside(pos, mat, size, pnt, vec)
+}
+
+/// `capsule` once the ray meets its bounding sphere.
+fn capsule_inside(pos: &Vec3, mat: &Mat3, size: &[f64], pnt: &Vec3, vec: &Vec3) -> f64 {
     let (lp, lv) = to_local(pos, mat, pnt, vec);
     let mut x = -1.0;
 
@@ -130,15 +180,18 @@ fn ellipsoid(pos: &Vec3, mat: &Mat3, size: &[f64], pnt: &Vec3, vec: &Vec3) -> f6
 }
 
 fn cylinder(pos: &Vec3, mat: &Mat3, size: &[f64], pnt: &Vec3, vec: &Vec3) -> f64 {
-    if sphere(
-        pos,
-        (size[0] * size[0] + size[1] * size[1]).sqrt(),
-        pnt,
-        vec,
-    ) < 0.0
-    {
+    if !meets_sphere(pos, cylinder_radius(size), pnt, vec) {
         return -1.0;
     }
+    cylinder_inside(pos, mat, size, pnt, vec)
+}
+
+fn cylinder_radius(size: &[f64]) -> f64 {
+    (size[0] * size[0] + size[1] * size[1]).sqrt()
+}
+
+/// `cylinder` once the ray meets its bounding sphere.
+fn cylinder_inside(pos: &Vec3, mat: &Mat3, size: &[f64], pnt: &Vec3, vec: &Vec3) -> f64 {
     let (lp, lv) = to_local(pos, mat, pnt, vec);
     let mut x = -1.0;
 
@@ -182,10 +235,25 @@ pub fn box_faces(
     all: &mut [f64; 6],
 ) -> f64 {
     *all = [-1.0; 6];
-    let radius = (size[0] * size[0] + size[1] * size[1] + size[2] * size[2]).sqrt();
-    if sphere(pos, radius, pnt, vec) < 0.0 {
+    if !meets_sphere(pos, box_radius(size), pnt, vec) {
         return -1.0;
     }
+    box_inside(pos, mat, size, pnt, vec, all)
+}
+
+fn box_radius(size: &[f64]) -> f64 {
+    (size[0] * size[0] + size[1] * size[1] + size[2] * size[2]).sqrt()
+}
+
+/// `box_faces` once the ray meets the bounding sphere (`all` all -1).
+fn box_inside(
+    pos: &Vec3,
+    mat: &Mat3,
+    size: &[f64],
+    pnt: &Vec3,
+    vec: &Vec3,
+    all: &mut [f64; 6],
+) -> f64 {
     const FACE: [[usize; 2]; 3] = [[1, 2], [0, 2], [0, 1]];
     let (lp, lv) = to_local(pos, mat, pnt, vec);
     let mut x = -1.0;
@@ -225,12 +293,6 @@ pub fn ray_geom(
 /// `ray_geom` for the primitive types; None for the others.
 #[inline]
 fn primitive(pos: &Vec3, mat: &Mat3, size: &[f64], pnt: &Vec3, vec: &Vec3, ty: i32) -> Option<f64> {
-    const PLANE: i32 = mjGEOM_PLANE as i32;
-    const SPHERE: i32 = mjGEOM_SPHERE as i32;
-    const CAPSULE: i32 = mjGEOM_CAPSULE as i32;
-    const ELLIPSOID: i32 = mjGEOM_ELLIPSOID as i32;
-    const CYLINDER: i32 = mjGEOM_CYLINDER as i32;
-    const BOX: i32 = mjGEOM_BOX as i32;
     Some(match ty {
         PLANE => plane(pos, mat, size, pnt, vec),
         SPHERE => sphere(pos, size[0], pnt, vec),
@@ -305,25 +367,63 @@ pub fn ray(
         group: m.geom_group(),
     };
     let size = m.geom_size();
-    for g in 0..m.raw.ngeom as usize {
-        if vis.eliminated(g, groups, with_static, exclude) {
-            continue;
-        }
-        let ty = vis.ty[g];
-        let x = if ty == mjGEOM_MESH as i32 {
-            super::ray_mesh::ray_mesh(m, d, g, pnt, vec)?
-        } else if ty == mjGEOM_HFIELD as i32 {
-            super::ray_mesh::ray_hfield(m, d, g, pnt, vec)?
-        } else {
-            let (pos, mat) = (row(d.geom_xpos, g), row(d.geom_xmat, g));
-            match primitive(&pos, &mat, &size[3 * g..3 * g + 3], pnt, vec, ty) {
-                Some(x) => x,
-                None => return Err(EngineError(format!("mj_ray: unexpected geom type {ty}"))),
+    let ngeom = m.raw.ngeom as usize;
+    // geoms in blocks: first the bounding-sphere tests of the whole block, without branching
+    // on their outcome, then the geoms left, in order (the first nearest one is kept)
+    const BLOCK: usize = 64;
+    let mut left = [0u32; BLOCK];
+    let a = vec[0] * vec[0] + vec[1] * vec[1] + vec[2] * vec[2];
+    let sure = (1e-300..1e280).contains(&a);
+    for start in (0..ngeom).step_by(BLOCK) {
+        let mut n = 0;
+        for g in start..ngeom.min(start + BLOCK) {
+            if vis.eliminated(g, groups, with_static, exclude) {
+                continue;
             }
-        };
-        if x >= 0.0 && (x < dist || dist < 0.0) {
-            dist = x;
-            id = g as i32;
+            let ty = vis.ty[g];
+            let sz = &size[3 * g..3 * g + 3];
+            let radius = match ty {
+                SPHERE => sz[0],
+                CAPSULE => sz[0] + sz[1],
+                CYLINDER => cylinder_radius(sz),
+                BOX => box_radius(sz),
+                _ => f64::NAN, // no bounding test
+            };
+            let pos = row(d.geom_xpos, g);
+            let meets = if radius.is_nan() {
+                true
+            } else if sure {
+                meets_sphere_sure(&pos, radius, pnt, vec)
+            } else {
+                meets_sphere(&pos, radius, pnt, vec)
+            };
+            left[n] = g as u32;
+            n += meets as usize;
+        }
+        for &g in &left[..n] {
+            let g = g as usize;
+            let ty = vis.ty[g];
+            let x = if ty == mjGEOM_MESH as i32 {
+                super::ray_mesh::ray_mesh(m, d, g, pnt, vec)?
+            } else if ty == mjGEOM_HFIELD as i32 {
+                super::ray_mesh::ray_hfield(m, d, g, pnt, vec)?
+            } else {
+                let (pos, mat) = (row(d.geom_xpos, g), row(d.geom_xmat, g));
+                let sz = &size[3 * g..3 * g + 3];
+                match ty {
+                    PLANE => plane(&pos, &mat, sz, pnt, vec),
+                    SPHERE => sphere(&pos, sz[0], pnt, vec),
+                    CAPSULE => capsule_inside(&pos, &mat, sz, pnt, vec),
+                    ELLIPSOID => ellipsoid(&pos, &mat, sz, pnt, vec),
+                    CYLINDER => cylinder_inside(&pos, &mat, sz, pnt, vec),
+                    BOX => box_inside(&pos, &mat, sz, pnt, vec, &mut [-1.0; 6]),
+                    _ => return Err(EngineError(format!("mj_ray: unexpected geom type {ty}"))),
+                }
+            };
+            if x >= 0.0 && (x < dist || dist < 0.0) {
+                dist = x;
+                id = g as i32;
+            }
         }
     }
     Ok((dist, id))

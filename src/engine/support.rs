@@ -10,6 +10,7 @@ use crate::math::*;
 
 /// Global pose of a frame given relative to `body` (mj_local2Global); `sameframe` 1 copies
 /// the body frame, 2 the inertial frame.
+#[inline(always)]
 pub fn local_to_global(
     d: &Data,
     pos: &Vec3,

@@ -1,0 +1,40 @@
+//! Ray casting: capi-tests/ray.c casts 8,424 rays with mj_ray (filters, static geoms off,
+//! excluded bodies, direction lengths from 1e-8 to 1e160) against models/extra/ray_scene.xml,
+//! with every geom type, and each geom alone through mju_rayGeom, mj_rayMesh and mj_rayHfield.
+//! Geom ids and distance bits must equal the reference's.
+
+mod common;
+use common::*;
+
+#[test]
+fn rays_like_the_reference() {
+    let src = [root().join("capi-tests/ray.c")];
+    let scene = model("extra/ray_scene.xml");
+    let out = |lib| {
+        let prog = compile_c(&src, "ray", lib);
+        let o = run(&prog, &[&scene], &[], 120);
+        assert!(o.status.success(), "{}{}", text(&o.stdout), text(&o.stderr));
+        text(&o.stdout)
+    };
+    let (reference, ours) = (out(Lib::Ref), out(Lib::Ours));
+    let summary = reference
+        .lines()
+        .find(|l| l.starts_with("mj_ray:"))
+        .unwrap_or_else(|| panic!("no summary: {reference}"))
+        .to_string();
+    // most rays must hit something, or the test would prove little
+    let hits: usize = summary
+        .split_whitespace()
+        .nth(3)
+        .and_then(|h| h.parse().ok())
+        .unwrap_or(0);
+    assert!(hits > 3000, "{summary}");
+    assert_eq!(
+        reference, ours,
+        "rays differ:\nreference:\n{reference}\nours:\n{ours}"
+    );
+    report(
+        "ray",
+        &format!("rays: identical ids and distance bits ({summary})\n"),
+    );
+}
