@@ -89,10 +89,12 @@ pub fn sensor_pos(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     if disabled(m, mjtDisableBit_::mjDSBL_SENSOR) || m.raw.nsensor <= 0 {
         return Ok(());
     }
+    let mut after = StageEnd::default();
     for i in 0..m.raw.nsensor as usize {
         if m.sensor_needstage()[i] != POS {
             continue;
         }
+        after.note(m, i);
         let ty = m.sensor_type()[i];
         let (objtype, objid) = (m.sensor_objtype()[i], m.sensor_objid()[i]);
         let (reftype, refid) = (m.sensor_reftype()[i], m.sensor_refid()[i]);
@@ -176,7 +178,7 @@ pub fn sensor_pos(m: &Model, d: &mut Data) -> Result<(), EngineError> {
             )));
         }
     }
-    finish_stage(m, d, POS)
+    finish_stage(m, d, POS, after)
 }
 
 /// Velocity-dependent sensors (mj_sensorVel).
@@ -185,10 +187,12 @@ pub fn sensor_vel(m: &Model, d: &mut Data) -> Result<(), EngineError> {
         return Ok(());
     }
     let mut have_subtree = false;
+    let mut after = StageEnd::default();
     for i in 0..m.raw.nsensor as usize {
         if m.sensor_needstage()[i] != VEL {
             continue;
         }
+        after.note(m, i);
         let ty = m.sensor_type()[i];
         let (objtype, objid) = (m.sensor_objtype()[i], m.sensor_objid()[i]);
         let (reftype, refid) = (m.sensor_reftype()[i], m.sensor_refid()[i]);
@@ -262,7 +266,7 @@ pub fn sensor_vel(m: &Model, d: &mut Data) -> Result<(), EngineError> {
             )));
         }
     }
-    finish_stage(m, d, VEL)
+    finish_stage(m, d, VEL, after)
 }
 
 /// Sum of the normal forces of the contacts of the site's body whose normal ray, cast from the
@@ -306,10 +310,12 @@ pub fn sensor_acc(m: &Model, d: &mut Data) -> Result<(), EngineError> {
         return Ok(());
     }
     let mut have_rne = false;
+    let mut after = StageEnd::default();
     for i in 0..m.raw.nsensor as usize {
         if m.sensor_needstage()[i] != ACC {
             continue;
         }
+        after.note(m, i);
         let ty = m.sensor_type()[i];
         let (objtype, objid) = (m.sensor_objtype()[i], m.sensor_objid()[i]);
         let adr = m.sensor_adr()[i] as usize;
@@ -369,22 +375,35 @@ pub fn sensor_acc(m: &Model, d: &mut Data) -> Result<(), EngineError> {
             )));
         }
     }
-    finish_stage(m, d, ACC)
+    finish_stage(m, d, ACC, after)
 }
 
 /// User sensors of `stage` (mjcb_sensor), then noise (when enabled) and cutoff.
-fn finish_stage(m: &Model, d: &mut Data, stage: i32) -> Result<(), EngineError> {
-    let user = (0..m.raw.nsensor as usize).any(|i| {
-        m.sensor_type()[i] == mjtSensor_::mjSENS_USER as i32 && m.sensor_needstage()[i] == stage
-    });
-    if user {
+/// What a stage's sensors need after they are computed, noted as the stage visits them.
+#[derive(Default, Clone, Copy)]
+struct StageEnd {
+    user: bool,
+    cutoff: bool,
+}
+
+impl StageEnd {
+    fn note(&mut self, m: &Model, i: usize) {
+        self.user |= m.sensor_type()[i] == mjtSensor_::mjSENS_USER as i32;
+        self.cutoff |= m.sensor_cutoff()[i] > 0.0;
+    }
+}
+
+fn finish_stage(m: &Model, d: &mut Data, stage: i32, after: StageEnd) -> Result<(), EngineError> {
+    if after.user {
         let top = d.arena.used();
         super::hooks::sensor(m, d, top, stage);
     }
     if enabled(m, mjtEnableBit_::mjENBL_SENSORNOISE) {
         add_noise(m, d, stage)?;
     }
-    apply_cutoff(m, d, stage);
+    if after.cutoff {
+        apply_cutoff(m, d, stage);
+    }
     Ok(())
 }
 
