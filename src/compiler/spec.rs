@@ -576,8 +576,6 @@ pub struct Texture {
     pub random: f64,
     pub width: i32,
     pub height: i32,
-    /// whether any file attribute is given
-    pub files: bool,
     /// `file`, then `fileright`, `fileleft`, `fileup`, `filedown`, `filefront`, `fileback`
     pub file_names: [String; 7],
     /// contents of those files (None when missing or unreadable), set before compiling
@@ -602,7 +600,6 @@ impl Default for Texture {
             random: 0.01,
             width: 0,
             height: 0,
-            files: false,
             file_names: Default::default(),
             bytes: Default::default(),
             gridsize: [1, 1],

@@ -932,7 +932,6 @@ fn read_assets(spec: &mut ModelSpec, el: &Element) -> R<()> {
                     "filefront",
                     "fileback",
                 ];
-                t.files = files.iter().any(|f| c.attr(f).is_some());
                 for (k, f) in files.iter().enumerate() {
                     text(c, f, &mut t.file_names[k]);
                 }

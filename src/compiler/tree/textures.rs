@@ -32,7 +32,9 @@ pub(super) fn compile(textures: &[Texture]) -> Result<Vec<TexImage>, CError> {
             }
             let rgb = crate::compiler::texture::builtin(t, width, height, &mut rng);
             images.push((t.kind, width as i32, height as i32, rgb));
-        } else if !t.file_names[0].is_empty() || (t.kind != 0 && t.files) {
+        } else if !t.file_names[0].is_empty()
+            || (t.kind != 0 && t.file_names[1..].iter().any(|f| !f.is_empty()))
+        {
             let (w, h, rgb) = crate::compiler::image::texture_files(t, id).map_err(err)?;
             images.push((t.kind, w as i32, h as i32, rgb));
         } else if t.kind == 0 {
@@ -78,5 +80,25 @@ impl Compiled {
         for (t, &id) in self.tendon_matid.iter().enumerate() {
             m.tendon_matid[t] = id;
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Empty file attributes name no file: a cube texture with only those is rejected, as
+    /// 2.2.2 rejects it (it loaded as an empty texture here).
+    #[test]
+    fn empty_file_attributes_are_no_cube_files() {
+        let t = Texture {
+            name: "body".into(),
+            ..Default::default()
+        };
+        let e = compile(&[t]).err().map(|e| e.msg).unwrap_or_default();
+        assert!(
+            e.contains("No cubefiles defined in cube or skybox texture 'body' (id 0)"),
+            "{e}"
+        );
     }
 }
