@@ -76,11 +76,18 @@ fn plane(pos: &Vec3, mat: &Mat3, size: &[f64], pnt: &Vec3, vec: &Vec3) -> f64 {
     }
 }
 
-fn sphere(pos: &Vec3, radius: f64, pnt: &Vec3, vec: &Vec3) -> f64 {
+/// (a, b, c) of the ray's quadratic a*x^2 + 2*b*x + c = 0 against a sphere.
+#[inline(always)]
+fn sphere_terms(pos: &Vec3, radius: f64, pnt: &Vec3, vec: &Vec3) -> (f64, f64, f64) {
     let dif = [pnt[0] - pos[0], pnt[1] - pos[1], pnt[2] - pos[2]];
     let a = vec[0] * vec[0] + vec[1] * vec[1] + vec[2] * vec[2];
     let b = vec[0] * dif[0] + vec[1] * dif[1] + vec[2] * dif[2];
     let c = dif[0] * dif[0] + dif[1] * dif[1] + dif[2] * dif[2] - radius * radius;
+    (a, b, c)
+}
+
+fn sphere(pos: &Vec3, radius: f64, pnt: &Vec3, vec: &Vec3) -> f64 {
+    let (a, b, c) = sphere_terms(pos, radius, pnt, vec);
     quadratic(a, b, c).0
 }
 
@@ -89,10 +96,7 @@ fn sphere(pos: &Vec3, radius: f64, pnt: &Vec3, vec: &Vec3) -> f64 {
 /// its numerator's when the divisor `a` is finite; otherwise the root is computed as there.
 #[inline(always)]
 fn meets_sphere(pos: &Vec3, radius: f64, pnt: &Vec3, vec: &Vec3) -> bool {
-    let dif = [pnt[0] - pos[0], pnt[1] - pos[1], pnt[2] - pos[2]];
-    let a = vec[0] * vec[0] + vec[1] * vec[1] + vec[2] * vec[2];
-    let b = vec[0] * dif[0] + vec[1] * dif[1] + vec[2] * dif[2];
-    let c = dif[0] * dif[0] + dif[1] * dif[1] + dif[2] * dif[2] - radius * radius;
+    let (a, b, c) = sphere_terms(pos, radius, pnt, vec);
     let det = b * b - a * c;
     if det < MINVAL {
         return false;
@@ -110,10 +114,7 @@ fn meets_sphere(pos: &Vec3, radius: f64, pnt: &Vec3, vec: &Vec3) -> bool {
 /// negative root, so the numerator's sign decides but in that sliver near zero.
 #[inline(always)]
 fn meets_sphere_sure(pos: &Vec3, radius: f64, pnt: &Vec3, vec: &Vec3) -> bool {
-    let dif = [pnt[0] - pos[0], pnt[1] - pos[1], pnt[2] - pos[2]];
-    let a = vec[0] * vec[0] + vec[1] * vec[1] + vec[2] * vec[2];
-    let b = vec[0] * dif[0] + vec[1] * dif[1] + vec[2] * dif[2];
-    let c = dif[0] * dif[0] + dif[1] * dif[1] + dif[2] * dif[2] - radius * radius;
+    let (a, b, c) = sphere_terms(pos, radius, pnt, vec);
     let det = b * b - a * c;
     let num = -b + det.sqrt();
     if (num > -1e-40) & (num < 0.0) {
