@@ -237,7 +237,7 @@ pub unsafe fn copy_data(
     (*dest).buffer = buffer;
     (*dest).stack = stack;
     set_data_pointers(m, &mut *dest);
-    ViewSlot::clear(&*dest);
+    ViewSlot::init(&*dest);
     std::ptr::copy_nonoverlapping(
         src.buffer as *const u8,
         buffer as *mut u8,

@@ -100,9 +100,12 @@ macro_rules! data_views {
                 Self::build_and_keep(m, d, slot)
             }
 
+            /// Builds the view from every array's length, and keeps it in `slot`.
             #[inline(never)]
             unsafe fn build_and_keep(m: &mjModel, d: &'a mut mjData, slot: *mut ViewSlot) -> Self {
-                let view = Self::build(m, d);
+                let arena = Self::arena(d);
+                $(let $name = array_view(d.$name, row_len!(m, $d1, $($d2)+));)*
+                let view = Data { raw: d, arena, $($name,)* };
                 (*slot).keep(m, &view);
                 view
             }
@@ -115,11 +118,6 @@ macro_rules! data_views {
                 Arena { free: &mut stack[pstack..], used: pstack, peak: pstack }
             }
 
-            unsafe fn build(m: &mjModel, d: &'a mut mjData) -> Self {
-                let arena = Self::arena(d);
-                $(let $name = array_view(d.$name, row_len!(m, $d1, $($d2)+));)*
-                Data { raw: d, arena, $($name,)* }
-            }
 
             /// Runs `f` on a reborrowed view whose stack allocations are released afterwards
             /// (2.2.2's mjMARKSTACK / mjFREESTACK around a call); their high-water mark stays.
@@ -195,7 +193,7 @@ impl ViewSlot {
         (d.buffer as *mut u8).add(Self::offset(d.nbuffer.max(0) as usize)) as *mut ViewSlot
     }
 
-    /// Marks the slot of fresh data `d` as its own and empty.
+    /// Marks the slot of `d` as its own and empty (fresh data, or a header overwritten).
     ///
     /// # Safety
     /// `d` came from `alloc_data`, which made room for the slot.
@@ -204,14 +202,6 @@ impl ViewSlot {
         (*slot).owner = d;
         (*slot).buffer = d.buffer;
         (*slot).model = std::ptr::null();
-    }
-
-    /// Forgets the kept view (the data's header was overwritten).
-    ///
-    /// # Safety
-    /// As `init`.
-    pub unsafe fn clear(d: &mjData) {
-        Self::init(d)
     }
 
     fn owns(&self, d: &mjData) -> bool {

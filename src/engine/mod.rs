@@ -42,6 +42,19 @@ pub const JNT_BALL: i32 = mjtJoint_::mjJNT_BALL as i32;
 pub const JNT_SLIDE: i32 = mjtJoint_::mjJNT_SLIDE as i32;
 pub const JNT_HINGE: i32 = mjtJoint_::mjJNT_HINGE as i32;
 
+/// Geom type codes as stored in `geom_type`.
+pub mod geom {
+    use crate::abi::mjtGeom_::*;
+    pub const PLANE: i32 = mjGEOM_PLANE as i32;
+    pub const HFIELD: i32 = mjGEOM_HFIELD as i32;
+    pub const SPHERE: i32 = mjGEOM_SPHERE as i32;
+    pub const CAPSULE: i32 = mjGEOM_CAPSULE as i32;
+    pub const ELLIPSOID: i32 = mjGEOM_ELLIPSOID as i32;
+    pub const CYLINDER: i32 = mjGEOM_CYLINDER as i32;
+    pub const BOX: i32 = mjGEOM_BOX as i32;
+    pub const MESH: i32 = mjGEOM_MESH as i32;
+}
+
 /// Largest magnitude accepted in qpos, qvel, qacc and ctrl.
 pub const MAXVAL: f64 = 1e10;
 /// Smallest value used in denominators.

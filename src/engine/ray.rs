@@ -1,17 +1,10 @@
 //! Ray casting (mj_ray, mju_rayGeom): distance along the ray direction to the nearest surface
 //! point, or -1 when the ray misses. Meshes, height fields and skins: ray_mesh.rs.
 
+use super::geom::*;
 use super::linalg::row;
 use super::{Data, EngineError, Model, MINVAL};
-use crate::abi::mjtGeom_::*;
 use crate::math::{norm3, Mat3, Vec3};
-
-const PLANE: i32 = mjGEOM_PLANE as i32;
-const SPHERE: i32 = mjGEOM_SPHERE as i32;
-const CAPSULE: i32 = mjGEOM_CAPSULE as i32;
-const ELLIPSOID: i32 = mjGEOM_ELLIPSOID as i32;
-const CYLINDER: i32 = mjGEOM_CYLINDER as i32;
-const BOX: i32 = mjGEOM_BOX as i32;
 
 /// Number of geom groups (mjNGROUP).
 const NGROUP: i32 = 6;
@@ -123,15 +116,8 @@ fn meets_sphere_sure(pos: &Vec3, radius: f64, pnt: &Vec3, vec: &Vec3) -> bool {
     (det >= MINVAL) & (num >= 0.0)
 }
 
+/// Capsule, once the ray meets its bounding sphere.
 fn capsule(pos: &Vec3, mat: &Mat3, size: &[f64], pnt: &Vec3, vec: &Vec3) -> f64 {
-    if !meets_sphere(pos, size[0] + size[1], pnt, vec) {
-        return -1.0;
-    }
-    capsule_inside(pos, mat, size, pnt, vec)
-}
-
-/// `capsule` once the ray meets its bounding sphere.
-fn capsule_inside(pos: &Vec3, mat: &Mat3, size: &[f64], pnt: &Vec3, vec: &Vec3) -> f64 {
     let (lp, lv) = to_local(pos, mat, pnt, vec);
     let mut x = -1.0;
 
@@ -180,19 +166,8 @@ fn ellipsoid(pos: &Vec3, mat: &Mat3, size: &[f64], pnt: &Vec3, vec: &Vec3) -> f6
     quadratic(a, b, c).0
 }
 
+/// Cylinder, once the ray meets its bounding sphere.
 fn cylinder(pos: &Vec3, mat: &Mat3, size: &[f64], pnt: &Vec3, vec: &Vec3) -> f64 {
-    if !meets_sphere(pos, cylinder_radius(size), pnt, vec) {
-        return -1.0;
-    }
-    cylinder_inside(pos, mat, size, pnt, vec)
-}
-
-fn cylinder_radius(size: &[f64]) -> f64 {
-    (size[0] * size[0] + size[1] * size[1]).sqrt()
-}
-
-/// `cylinder` once the ray meets its bounding sphere.
-fn cylinder_inside(pos: &Vec3, mat: &Mat3, size: &[f64], pnt: &Vec3, vec: &Vec3) -> f64 {
     let (lp, lv) = to_local(pos, mat, pnt, vec);
     let mut x = -1.0;
 
@@ -221,10 +196,6 @@ fn cylinder_inside(pos: &Vec3, mat: &Mat3, size: &[f64], pnt: &Vec3, vec: &Vec3)
     x
 }
 
-fn boxed(pos: &Vec3, mat: &Mat3, size: &[f64], pnt: &Vec3, vec: &Vec3) -> f64 {
-    box_faces(pos, mat, size, pnt, vec, &mut [0.0; 6])
-}
-
 /// Box intersection; `all` receives the distance to each face (-x, +x, -y, +y, -z, +z) that
 /// the ray crosses inside the face, else -1.
 pub fn box_faces(
@@ -236,14 +207,10 @@ pub fn box_faces(
     all: &mut [f64; 6],
 ) -> f64 {
     *all = [-1.0; 6];
-    if !meets_sphere(pos, box_radius(size), pnt, vec) {
+    if !meets_sphere(pos, bounding_radius(BOX, size).unwrap_or(0.0), pnt, vec) {
         return -1.0;
     }
     box_inside(pos, mat, size, pnt, vec, all)
-}
-
-fn box_radius(size: &[f64]) -> f64 {
-    (size[0] * size[0] + size[1] * size[1] + size[2] * size[2]).sqrt()
 }
 
 /// `box_faces` once the ray meets the bounding sphere (`all` all -1).
@@ -291,16 +258,42 @@ pub fn ray_geom(
         .ok_or_else(|| EngineError(format!("mju_rayGeom: unexpected geom type {geomtype}")))
 }
 
+/// Radius of the sphere whose test a primitive's own test starts with (None: no such test).
+fn bounding_radius(ty: i32, size: &[f64]) -> Option<f64> {
+    match ty {
+        SPHERE => Some(size[0]),
+        CAPSULE => Some(size[0] + size[1]),
+        CYLINDER => Some((size[0] * size[0] + size[1] * size[1]).sqrt()),
+        BOX => Some((size[0] * size[0] + size[1] * size[1] + size[2] * size[2]).sqrt()),
+        _ => None,
+    }
+}
+
 /// `ray_geom` for the primitive types; None for the others.
-#[inline]
 fn primitive(pos: &Vec3, mat: &Mat3, size: &[f64], pnt: &Vec3, vec: &Vec3, ty: i32) -> Option<f64> {
+    match bounding_radius(ty, size) {
+        Some(r) if !meets_sphere(pos, r, pnt, vec) => Some(-1.0),
+        _ => primitive_inside(pos, mat, size, pnt, vec, ty),
+    }
+}
+
+/// A primitive's own test, once the ray meets its bounding sphere; None for other types.
+#[inline]
+fn primitive_inside(
+    pos: &Vec3,
+    mat: &Mat3,
+    size: &[f64],
+    pnt: &Vec3,
+    vec: &Vec3,
+    ty: i32,
+) -> Option<f64> {
     Some(match ty {
         PLANE => plane(pos, mat, size, pnt, vec),
         SPHERE => sphere(pos, size[0], pnt, vec),
         CAPSULE => capsule(pos, mat, size, pnt, vec),
         ELLIPSOID => ellipsoid(pos, mat, size, pnt, vec),
         CYLINDER => cylinder(pos, mat, size, pnt, vec),
-        BOX => boxed(pos, mat, size, pnt, vec),
+        BOX => box_inside(pos, mat, size, pnt, vec, &mut [-1.0; 6]),
         _ => return None,
     })
 }
@@ -334,7 +327,7 @@ impl Visibility<'_> {
             return true;
         }
         let ty = self.ty[g];
-        if ty == mjGEOM_PLANE as i32 || ty == mjGEOM_HFIELD as i32 {
+        if ty == PLANE || ty == HFIELD {
             return false;
         }
         match groups {
@@ -381,22 +374,11 @@ pub fn ray(
             if vis.eliminated(g, groups, with_static, exclude) {
                 continue;
             }
-            let ty = vis.ty[g];
-            let sz = &size[3 * g..3 * g + 3];
-            let radius = match ty {
-                SPHERE => sz[0],
-                CAPSULE => sz[0] + sz[1],
-                CYLINDER => cylinder_radius(sz),
-                BOX => box_radius(sz),
-                _ => f64::NAN, // no bounding test
-            };
             let pos = row(d.geom_xpos, g);
-            let meets = if radius.is_nan() {
-                true
-            } else if sure {
-                meets_sphere_sure(&pos, radius, pnt, vec)
-            } else {
-                meets_sphere(&pos, radius, pnt, vec)
+            let meets = match bounding_radius(vis.ty[g], &size[3 * g..3 * g + 3]) {
+                None => true,
+                Some(r) if sure => meets_sphere_sure(&pos, r, pnt, vec),
+                Some(r) => meets_sphere(&pos, r, pnt, vec),
             };
             left[n] = g as u32;
             n += meets as usize;
@@ -404,22 +386,14 @@ pub fn ray(
         for &g in &left[..n] {
             let g = g as usize;
             let ty = vis.ty[g];
-            let x = if ty == mjGEOM_MESH as i32 {
+            let x = if ty == MESH {
                 super::ray_mesh::ray_mesh(m, d, g, pnt, vec)?
-            } else if ty == mjGEOM_HFIELD as i32 {
+            } else if ty == HFIELD {
                 super::ray_mesh::ray_hfield(m, d, g, pnt, vec)?
             } else {
                 let (pos, mat) = (row(d.geom_xpos, g), row(d.geom_xmat, g));
-                let sz = &size[3 * g..3 * g + 3];
-                match ty {
-                    PLANE => plane(&pos, &mat, sz, pnt, vec),
-                    SPHERE => sphere(&pos, sz[0], pnt, vec),
-                    CAPSULE => capsule_inside(&pos, &mat, sz, pnt, vec),
-                    ELLIPSOID => ellipsoid(&pos, &mat, sz, pnt, vec),
-                    CYLINDER => cylinder_inside(&pos, &mat, sz, pnt, vec),
-                    BOX => box_inside(&pos, &mat, sz, pnt, vec, &mut [-1.0; 6]),
-                    _ => return Err(EngineError(format!("mj_ray: unexpected geom type {ty}"))),
-                }
+                primitive_inside(&pos, &mat, &size[3 * g..3 * g + 3], pnt, vec, ty)
+                    .ok_or_else(|| EngineError(format!("mj_ray: unexpected geom type {ty}")))?
             };
             if x >= 0.0 && (x < dist || dist < 0.0) {
                 dist = x;

@@ -378,7 +378,6 @@ pub fn sensor_acc(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     finish_stage(m, d, ACC, after)
 }
 
-/// User sensors of `stage` (mjcb_sensor), then noise (when enabled) and cutoff.
 /// What a stage's sensors need after they are computed, noted as the stage visits them.
 #[derive(Default, Clone, Copy)]
 struct StageEnd {
@@ -393,6 +392,7 @@ impl StageEnd {
     }
 }
 
+/// User sensors of `stage` (mjcb_sensor), then noise (when enabled) and cutoff.
 fn finish_stage(m: &Model, d: &mut Data, stage: i32, after: StageEnd) -> Result<(), EngineError> {
     if after.user {
         let top = d.arena.used();

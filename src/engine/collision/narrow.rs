@@ -4,20 +4,12 @@
 use super::boxes;
 use super::convex::{self, ConvexGeom, HField, MeshData, MprOptions, Shape};
 use super::primitive::{self as prim, ContactGeom, GeomPose};
-use crate::abi::{mjtEnableBit_, mjtGeom_};
+use crate::abi::mjtEnableBit_;
+use crate::engine::geom::*;
 use crate::engine::linalg::row;
 use crate::engine::{enabled, Data, Model};
 
 pub use super::convex::MAX_CONTACT_PAIR;
-
-const PLANE: i32 = mjtGeom_::mjGEOM_PLANE as i32;
-const HFIELD: i32 = mjtGeom_::mjGEOM_HFIELD as i32;
-const SPHERE: i32 = mjtGeom_::mjGEOM_SPHERE as i32;
-const CAPSULE: i32 = mjtGeom_::mjGEOM_CAPSULE as i32;
-const ELLIPSOID: i32 = mjtGeom_::mjGEOM_ELLIPSOID as i32;
-const CYLINDER: i32 = mjtGeom_::mjGEOM_CYLINDER as i32;
-const BOX: i32 = mjtGeom_::mjGEOM_BOX as i32;
-const MESH: i32 = mjtGeom_::mjGEOM_MESH as i32;
 
 /// Is there a routine for these types (t1 <= t2)? Planes and height fields never meet each
 /// other.
