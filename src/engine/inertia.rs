@@ -10,29 +10,34 @@ use crate::math::*;
 pub fn crb(m: &Model, d: &mut Data, skipsimple: bool) {
     let nbody = m.raw.nbody as usize;
     let nv = m.raw.nv as usize;
-    d.crb.copy_from_slice(d.cinert);
+    let body_parent = m.body_parentid();
+    let (madr, simple, parent) = (m.dof_Madr(), m.dof_simplenum(), m.dof_parentid());
+    let (m0, armature, dof_body) = (m.dof_M0(), m.dof_armature(), m.dof_bodyid());
+    let crb = &mut *d.crb;
+    crb.copy_from_slice(d.cinert);
     for i in (1..nbody).rev() {
-        let p = m.body_parentid()[i] as usize;
+        let p = body_parent[i] as usize;
         if p > 0 {
-            let (lo, hi) = d.crb.split_at_mut(10 * i);
+            let (lo, hi) = crb.split_at_mut(10 * i);
             add_to(&mut lo[10 * p..10 * p + 10], &hi[..10]);
         }
     }
-    d.qM.fill(0.0);
+    let (qm, cdof) = (&mut *d.qM, &*d.cdof);
+    qm.fill(0.0);
     for i in (0..nv).rev() {
-        let mut adr = m.dof_Madr()[i] as usize;
-        if skipsimple && m.dof_simplenum()[i] != 0 {
-            d.qM[adr] = m.dof_M0()[i];
+        let mut adr = madr[i] as usize;
+        if skipsimple && simple[i] != 0 {
+            qm[adr] = m0[i];
             continue;
         }
-        d.qM[adr] = m.dof_armature()[i];
-        let b = m.dof_bodyid()[i] as usize;
-        let tmp = mul_inert_vec(&d.crb[10 * b..10 * b + 10], &row(d.cdof, i));
+        qm[adr] = armature[i];
+        let b = dof_body[i] as usize;
+        let tmp = mul_inert_vec(&crb[10 * b..10 * b + 10], &row(cdof, i));
         let mut j = i as i32;
         while j >= 0 {
             let ju = j as usize;
-            d.qM[adr] += dot6(&d.cdof[6 * ju..6 * ju + 6], &tmp);
-            j = m.dof_parentid()[ju];
+            qm[adr] += dot6(&cdof[6 * ju..6 * ju + 6], &tmp);
+            j = parent[ju];
             adr += 1;
         }
     }

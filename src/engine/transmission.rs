@@ -59,9 +59,10 @@ pub fn transmission(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     }
     super::constraint::with_arena(d, |d, a| -> Result<(), EngineError> {
         let mut s = Scratch {
-            jac: a.alloc(3 * nv)?,
-            jac_a: a.alloc(3 * nv)?,
-            jac_s: a.alloc(3 * nv)?,
+            // written whole before they are read (not cleared, as in 2.2.2)
+            jac: a.alloc_stale(3 * nv)?,
+            jac_a: a.alloc_stale(3 * nv)?,
+            jac_s: a.alloc_stale(3 * nv)?,
             jac_ref: None,
             moment_tmp: None,
             body: None,
