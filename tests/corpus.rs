@@ -1,59 +1,150 @@
-//! Optional: compiled-model comparison over a corpus of real models (MuJoCo's and dm_control's),
-//! run only when a corpus is present (common::corpus_dirs: $RUJOCO_CORPUS, else ../shared/corpus; run-all
-//! sets RUJOCO_CORPUS to the dm_control 1.0.7 suite from PyPI when ../shared is absent).
-//! A model we cannot compile yet must be rejected with an error, never loaded with other values;
-//! the report (target/capi-tests/reports/corpus.txt) counts identical models; RUJOCO_CORPUS_STRICT=1
-//! requires every model identical.
+//! Optional: the corpus of real models (common::corpus_dirs: $RUJOCO_CORPUS, else ../shared/corpus;
+//! run-all sets RUJOCO_CORPUS to the dm_control 1.0.7 suite from PyPI when ../shared is absent,
+//! plus the other packages' models), run once per test process for both tests:
+//! - compiled models: a model we cannot compile yet must be rejected with an error, never loaded
+//!   with other values; the report (corpus.txt) counts identical models;
+//!   RUJOCO_CORPUS_STRICT=1 requires every model identical;
+//! - physics, for every model both libraries load: full physics (mj_forward, mj_step and
+//!   collision detection at 50 states of the reference's trajectory: harness groups forward,
+//!   step, collision), and, on the main corpus, smooth dynamics with constraints and contacts
+//!   disabled on both sides (forward and the body Jacobians), compared within the group
+//!   tolerances raised to 1000x the reference's noise floor. A model our engine stops on with
+//!   "not implemented" is counted, never one that differs. Report: physics-corpus.txt.
 
 mod common;
 use common::*;
+use std::path::Path;
+use std::sync::OnceLock;
+
+/// Models larger than this (nv) get no physics runs: their dumps would run to many GBs
+/// (humanoid100, nv 2700, stays in; the 1000-particle composite, nv 3000, with its contacts,
+/// does not).
+const MAX_NV: i32 = 2700;
+
+/// What one model's physics gave.
+enum Physics {
+    Skipped,
+    Unsupported(String),
+    /// smooth-dynamics parity, then the full-physics result: worst error, or what differs
+    Checked {
+        smooth: Result<bool, String>,
+        full: Result<f64, String>,
+    },
+}
+
+/// One corpus file: its path as reported, the compiled-model comparison (None: the reference
+/// rejects it; else identical, and the comparator's first line) and the physics.
+struct Model {
+    rel: String,
+    compiled: Option<(bool, String)>,
+    physics: Physics,
+}
+
+/// Every corpus file through both libraries, once per test process (None: no corpus).
+fn corpus() -> Option<&'static [Model]> {
+    static RUNS: OnceLock<Vec<Model>> = OnceLock::new();
+    let dirs = corpus_dirs();
+    if dirs.is_empty() {
+        return None;
+    }
+    Some(RUNS.get_or_init(|| {
+        let bin = harness_bin();
+        let base = work_dir("corpus");
+        let main = main_corpus_files();
+        par_map(&corpus_files(), |i, f| {
+            let rel = dirs
+                .iter()
+                .find_map(|d| f.strip_prefix(d.parent().unwrap_or(d)).ok())
+                .unwrap_or(f)
+                .display()
+                .to_string();
+            check(&bin, f, &base.join(i.to_string()), main.contains(f), rel)
+        })
+    }))
+}
+
+/// The compiled model first (small: it tells the size and whether ours loads it), then, for a
+/// model both load, the physics; `smooth`: also the run with constraints and contacts disabled.
+fn check(bin: &Path, f: &Path, dir: &Path, smooth: bool, rel: String) -> Model {
+    let _ = std::fs::remove_dir_all(dir);
+    let (fs, ds) = (
+        f.to_string_lossy().to_string(),
+        dir.to_string_lossy().to_string(),
+    );
+    let compiled = harness_compare(
+        bin,
+        &fs,
+        &ds,
+        &["--model-only"],
+        &["--groups", "model"],
+        120,
+    )
+    .map(|(ok, out)| (ok, out.lines().next().unwrap_or("").trim().to_string()));
+    let physics = match &compiled {
+        None => Physics::Skipped, // include files and deliberately malformed models
+        Some((false, _)) => Physics::Unsupported(format!("{}: compiler", f.display())),
+        Some((true, _)) if model_nv(&ds) > MAX_NV => Physics::Skipped,
+        Some((true, _)) => physics(bin, f, &fs, &ds, smooth),
+    };
+    let _ = std::fs::remove_dir_all(dir);
+    Model {
+        rel,
+        compiled,
+        physics,
+    }
+}
+
+fn physics(bin: &Path, f: &Path, fs: &str, ds: &str, smooth: bool) -> Physics {
+    let rel = f.display().to_string();
+    // smooth dynamics: constraints and contacts off on both sides
+    let g = ["--groups", "forward,jacBody,jacSite"];
+    let smooth_run = ["--groups", "forward,jacBody,jacSite", "--disable", "17"];
+    let smooth = match smooth
+        .then(|| harness_compare(bin, fs, ds, &smooth_run, &g, 600))
+        .flatten()
+    {
+        Some((true, _)) => Ok(true),
+        Some((false, out)) if !out.contains("not implemented") => {
+            Err(format!("{rel} (constraints and contacts disabled):\n{out}"))
+        }
+        _ => Ok(false),
+    };
+    let g = ["--groups", "forward,step,collision"];
+    let Some((ok, out)) = harness_compare(bin, fs, ds, &g, &g, 600) else {
+        return Physics::Skipped; // the reference stops on this model
+    };
+    let full = if ok {
+        Ok(out
+            .lines()
+            .filter_map(|l| l.split("check groups pass; worst relative error ").nth(1))
+            .filter_map(|w| w.split_whitespace().next()?.parse::<f64>().ok())
+            .fold(0.0, f64::max))
+    } else if out.contains("not implemented") {
+        return Physics::Unsupported(format!("{rel}: not implemented"));
+    } else {
+        Err(format!("{rel}:\n{out}"))
+    };
+    Physics::Checked { smooth, full }
+}
 
 #[test]
 fn corpus_compiled_models() {
-    let dirs = corpus_dirs();
-    if dirs.is_empty() {
+    let Some(models) = corpus() else {
         eprintln!("corpus_compiled_models: skipped, no corpus");
         return;
-    }
-    let bin = harness_bin();
-    let files = corpus_files();
-    let base = work_dir("corpus");
-    // per model: None when the reference rejects it, else (identical, path, first line)
-    let results = par_map(&files, |i, f| {
-        let dir = base.join(i.to_string());
-        let _ = std::fs::remove_dir_all(&dir);
-        let (fs, ds) = (
-            f.to_string_lossy().to_string(),
-            dir.to_string_lossy().to_string(),
-        );
-        let (ok, out) = harness_compare(
-            &bin,
-            &fs,
-            &ds,
-            &["--model-only"],
-            &["--groups", "model"],
-            120,
-        )?; // None: include files and deliberately malformed models
-        let rel = dirs
-            .iter()
-            .find_map(|d| f.strip_prefix(d.parent().unwrap_or(d)).ok())
-            .unwrap_or(f)
-            .display()
-            .to_string();
-        let why = out.lines().next().unwrap_or("").trim().to_string();
-        Some((ok, rel, why))
-    });
+    };
     let (mut same, mut differ, mut rejected) = (Vec::new(), Vec::new(), 0);
-    for r in results {
-        match r {
+    for m in models {
+        match &m.compiled {
             None => rejected += 1,
-            Some((true, rel, _)) => same.push(rel),
-            Some((false, rel, why)) => differ.push(format!("{rel}: {why}")),
+            Some((true, _)) => same.push(&m.rel),
+            Some((false, why)) => differ.push(format!("{}: {why}", m.rel)),
         }
     }
     let msg = format!(
         "corpus ({}): {} of {} models compile identically to 2.2.2 ({} files the reference rejects skipped)\n{}",
-        dirs.iter()
+        corpus_dirs()
+            .iter()
             .map(|d| d.display().to_string())
             .collect::<Vec<_>>()
             .join(", "),
@@ -75,4 +166,78 @@ fn corpus_compiled_models() {
     if std::env::var("RUJOCO_CORPUS_STRICT").is_ok_and(|v| v == "1") {
         assert!(differ.is_empty(), "{msg}");
     }
+}
+
+#[test]
+fn corpus_physics() {
+    let Some(models) = corpus() else {
+        eprintln!("corpus_physics: skipped, no corpus");
+        return;
+    };
+    let (mut same, mut unsupported, mut skipped) = (0, Vec::new(), 0);
+    let mut differ = Vec::new();
+    let mut worst = 0.0f64;
+    let mut smooth = 0;
+    for m in models {
+        match &m.physics {
+            Physics::Skipped => skipped += 1,
+            Physics::Unsupported(u) => unsupported.push(u),
+            Physics::Checked { smooth: s, full } => {
+                match s {
+                    Ok(true) => smooth += 1,
+                    Ok(false) => {}
+                    Err(d) => differ.push(d),
+                }
+                match full {
+                    Ok(w) => {
+                        worst = worst.max(*w);
+                        same += 1;
+                    }
+                    Err(d) => differ.push(d),
+                }
+            }
+        }
+    }
+    let msg = format!(
+        "physics corpus (forward, step, collision at 50 states): {same} of {} models at parity \
+         (worst relative error {worst:.2e}); {} stop on features not supported yet; {} differ; \
+         {skipped} skipped (reference rejects or stops, or nv > {MAX_NV}); with constraints and \
+         contacts disabled (main corpus), forward and Jacobians at parity on {smooth}\n{}{}",
+        same + unsupported.len() + differ.len(),
+        unsupported.len(),
+        differ.len(),
+        unsupported
+            .iter()
+            .map(|u| format!("  unsupported: {u}\n"))
+            .collect::<String>(),
+        differ
+            .iter()
+            .map(|d| format!("  DIFFERS: {d}\n"))
+            .collect::<String>(),
+    );
+    report("physics-corpus", &msg);
+    assert!(differ.is_empty(), "{msg}");
+}
+
+/// nv of the reference's compiled model in a harness directory.
+fn model_nv(dir: &str) -> i32 {
+    let p = Path::new(dir).join("ref/model.bin");
+    let bytes = std::fs::read(p).unwrap_or_default();
+    // record "nv" of type 'i': name length, name, type, byte count, value
+    let key = b"size.nv";
+    let mut i = 4;
+    while i + 4 <= bytes.len() {
+        let nl = u32::from_le_bytes(bytes[i..i + 4].try_into().unwrap()) as usize;
+        let name = &bytes[i + 4..(i + 4 + nl).min(bytes.len())];
+        let t = i + 4 + nl;
+        if t + 9 > bytes.len() {
+            break;
+        }
+        let nb = u64::from_le_bytes(bytes[t + 1..t + 9].try_into().unwrap()) as usize;
+        if name == key && nb == 4 {
+            return i32::from_le_bytes(bytes[t + 9..t + 13].try_into().unwrap());
+        }
+        i = t + 9 + nb;
+    }
+    0
 }

@@ -1,8 +1,8 @@
 //! MuJoCo's Python package on rujoco (python/): the same Python programs on the bindings built
-//! against rujoco and against Debian's 2.2.2 print the same numbers, and the same digests of the
-//! frames they render headless through Mesa's llvmpipe (MUJOCO_GL=egl and MUJOCO_GL=osmesa).
-//! The two venvs live under target/python and are rebuilt only when the headers or the build
-//! backend change; ours gets the current libmujoco.so copied in at every run.
+//! against rujoco (`pip install ./python`), run on rujoco and, with Debian's libmujoco.so.2.2.2
+//! in its place, on the reference, print the same numbers, and the same digests of the frames
+//! they render headless through Mesa's llvmpipe (MUJOCO_GL=egl and MUJOCO_GL=osmesa). The two
+//! venvs live under target/python (see build_venv).
 
 mod common;
 
@@ -69,25 +69,11 @@ fn sh(cmd: &mut Command, what: &str) -> Result<(), String> {
     }
 }
 
-/// Debian's 2.2.2 headers and library in the layout the bindings' setup.py looks for.
-fn reference_stage(dir: &Path) -> PathBuf {
-    let stage = dir.join("reference-mujoco");
-    let _ = std::fs::remove_dir_all(&stage);
-    std::fs::create_dir_all(stage.join("lib")).unwrap();
-    std::fs::create_dir_all(stage.join("include/mujoco")).unwrap();
-    for e in std::fs::read_dir("/usr/include/mujoco").unwrap() {
-        let p = e.unwrap().path();
-        std::fs::copy(
-            &p,
-            stage.join("include/mujoco").join(p.file_name().unwrap()),
-        )
-        .unwrap();
-    }
-    std::fs::copy(REF_LIB, stage.join("lib/libmujoco.so.2.2.2")).unwrap();
-    std::os::unix::fs::symlink("libmujoco.so.2.2.2", stage.join("lib/libmujoco.so")).unwrap();
-    stage
-}
-
+/// The venv of one side. Ours: `pip install ./python` (the bindings built against our headers
+/// and library) with the packages; the reference's: a copy of ours with Debian's library in
+/// place of ours, so that both sides run the same compiled bindings and differ only in the
+/// library (the drop-in case). Rebuilt when the headers or the build backend change; ours gets
+/// the current libmujoco.so copied in at every run.
 fn build_venv(side: Side) -> Result<PathBuf, String> {
     let dir = target_dir().join("python");
     let venv = dir.join(format!("venv-{}", side.name()));
@@ -96,25 +82,38 @@ fn build_venv(side: Side) -> Result<PathBuf, String> {
     let want = stamp();
     if std::fs::read_to_string(&stamp_file).ok().as_deref() != Some(want.as_str()) {
         let _ = std::fs::remove_dir_all(&venv);
-        sh(
-            Command::new("python3").args(["-m", "venv"]).arg(&venv),
-            "python3 -m venv",
-        )?;
-        let mut pip = Command::new(&py);
-        pip.args(["-m", "pip", "install", "-q"])
-            .arg(root().join("python"))
-            .args(PACKAGES)
-            .current_dir(root());
         if side == Side::Ref {
-            pip.env("RUJOCO_BINDINGS_MUJOCO_PATH", reference_stage(&dir));
+            let Some(ours) = python(Side::Ours) else {
+                return Err(
+                    "the reference venv is a copy of ours, which could not be built".into(),
+                );
+            };
+            let ours = ours.parent().and_then(Path::parent).unwrap();
+            sh(
+                Command::new("cp").arg("-a").arg(ours).arg(&venv),
+                "cp -a venv-ours venv-ref",
+            )?;
+        } else {
+            sh(
+                Command::new("python3").args(["-m", "venv"]).arg(&venv),
+                "python3 -m venv",
+            )?;
+            let mut pip = Command::new(&py);
+            pip.args(["-m", "pip", "install", "-q"])
+                .arg(root().join("python"))
+                .args(PACKAGES)
+                .current_dir(root());
+            sh(&mut pip, "pip install ./python")?;
         }
-        sh(&mut pip, &format!("pip install ./python ({})", side.name()))?;
         std::fs::write(&stamp_file, want).unwrap();
     }
-    if side == Side::Ours {
-        let site = site_packages(&venv);
-        std::fs::copy(our_lib(), site.join("mujoco/libmujoco.so.2.2.2")).unwrap();
-    }
+    let lib = match side {
+        Side::Ours => our_lib(),
+        Side::Ref => PathBuf::from(REF_LIB),
+    };
+    let dest = site_packages(&venv).join("mujoco/libmujoco.so.2.2.2");
+    let _ = std::fs::remove_file(&dest);
+    std::fs::copy(lib, dest).unwrap();
     Ok(py)
 }
 
