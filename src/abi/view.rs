@@ -118,7 +118,6 @@ macro_rules! data_views {
                 Arena { free: &mut stack[pstack..], used: pstack, peak: pstack }
             }
 
-
             /// Runs `f` on a reborrowed view whose stack allocations are released afterwards
             /// (2.2.2's mjMARKSTACK / mjFREESTACK around a call); their high-water mark stays.
             pub fn scoped<R>(&mut self, f: impl FnOnce(&mut Data<'_>) -> R) -> R {
