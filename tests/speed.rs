@@ -126,6 +126,61 @@ fn speed_against_the_reference() {
     eprintln!("{msg}");
 }
 
+/// capi-tests/ab.c (bench --ab): both libraries in one process, alternating blocks of steps.
+#[test]
+fn one_process_ratios() {
+    let _quiet = QUIET.lock();
+    require_reference();
+    let exe = work_dir("bin").join("ab");
+    let o = std::process::Command::new("gcc")
+        .args(["-std=c11", "-O2", "-Wall", "-Werror", "-I"])
+        .arg(root().join("include"))
+        .arg("-o")
+        .arg(&exe)
+        .arg(root().join("capi-tests/ab.c"))
+        .arg("-ldl")
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "gcc ab.c:\n{}", text(&o.stderr));
+    let (ours, model) = (our_lib(), model("arm3.xml"));
+    let ours = ours.to_string_lossy();
+    let mut lines = Vec::new();
+    for flags in ["0", SMOOTH] {
+        let o = run(&exe, &[&ours, REF_LIB, &model, "50", "40", flags], &[], 120);
+        let out = text(&o.stdout);
+        let ns: Vec<f64> = out
+            .strip_prefix("ab ")
+            .map(|r| {
+                r.split_whitespace()
+                    .filter_map(|v| v.parse().ok())
+                    .collect()
+            })
+            .unwrap_or_default();
+        assert!(
+            ns.len() == 4 && ns.iter().all(|&t| t > 0.0),
+            "ab broke: {out}{}",
+            text(&o.stderr)
+        );
+        lines.push(format!(
+            "  arm3 disableflags {flags}: ours {:.2} us, reference {:.2} us a step (median blocks), ratio {:.2}x",
+            ns[1] / 1000.0,
+            ns[3] / 1000.0,
+            ns[3] / ns[1]
+        ));
+    }
+    let same = run(&exe, &[&ours, &ours, &model, "1", "1"], &[], 60);
+    assert!(
+        text(&same.stdout).starts_with("error"),
+        "ab took one library for two"
+    );
+    let msg = format!(
+        "one-process ratios (capi-tests/ab.c, 40 alternating blocks of 50 steps):\n{}\n",
+        lines.join("\n")
+    );
+    report("speed-one-process", &msg);
+    eprintln!("{msg}");
+}
+
 /// Loading speed: every corpus and project model both libraries load, each once a run.
 #[test]
 fn loading_speed() {
