@@ -108,8 +108,8 @@ fn body_aabb(m: &Model, d: &Data, b: usize, frame: &Mat3) -> [f64; 6] {
     aabb
 }
 
-/// Principal axes of the non-world geom centres (rows), or None without such geoms.
-fn principal_frame(m: &Model, d: &Data) -> Option<Mat3> {
+/// Principal axes (rows) of the centres of the geoms not on the world, of which there is one.
+fn principal_frame(m: &Model, d: &Data) -> Mat3 {
     let ngeom = m.raw.ngeom as usize;
     let mut cen = [0.0; 3];
     let mut cnt = 0usize;
@@ -119,9 +119,6 @@ fn principal_frame(m: &Model, d: &Data) -> Option<Mat3> {
             cen[k] += p[k];
         }
         cnt += 1;
-    }
-    if cnt == 0 {
-        return None;
     }
     for c in &mut cen {
         *c /= cnt as f64;
@@ -141,7 +138,7 @@ fn principal_frame(m: &Model, d: &Data) -> Option<Mat3> {
     for c in &mut cov {
         *c /= cnt as f64;
     }
-    Some(eig3(&cov).eigvec)
+    eig3(&cov).eigvec
 }
 
 /// Candidate body pairs into `pair` (from the arena), sorted by signature; returns their count.
@@ -168,10 +165,10 @@ pub fn broadphase<'a>(
         }
     }
 
-    if let Some(frame) = principal_frame(m, d) {
+    if m.geom_bodyid().iter().any(|&b| b != 0) {
         // its buffers are released on return, the pair list stays (the contact filter then
         // sees 2.2.2's stack top)
-        a.scope(|a| sweep_and_prune(m, d, a, &frame, &mut pairs))?;
+        a.scope(|a| sweep_and_prune(m, d, a, &mut pairs))?;
     }
 
     // integers: any sort gives glibc's order
@@ -185,16 +182,11 @@ fn sweep_and_prune(
     m: &Model,
     d: &Data,
     a: &mut Arena,
-    frame: &Mat3,
     pairs: &mut Pairs,
 ) -> Result<(), EngineError> {
     let nbody = m.raw.nbody as usize;
     let aabb = a.alloc(6 * nbody)?;
-    let mut count = 0;
-    for b in 1..nbody {
-        aabb[6 * b..6 * b + 6].copy_from_slice(&body_aabb(m, d, b, frame));
-        count += can_collide(m, b) as usize;
-    }
+    let count = (1..nbody).filter(|&b| can_collide(m, b)).count();
     if count == 0 {
         return Ok(());
     }
@@ -204,6 +196,14 @@ fn sweep_and_prune(
     // and 2*count for the active list (which also serves as the merge sort's buffer)
     let entries = a.alloc_u64_stale(2 * count)?;
     let active = a.alloc_u64_stale(2 * count)?;
+    if count == 1 {
+        // a lone body pairs with nobody here, whatever the frame: skip finding it
+        return Ok(());
+    }
+    let frame = principal_frame(m, d);
+    for b in 1..nbody {
+        aabb[6 * b..6 * b + 6].copy_from_slice(&body_aabb(m, d, b, &frame));
+    }
     for (j, b) in (1..nbody).filter(|&b| can_collide(m, b)).enumerate() {
         let (lo, hi) = (aabb[6 * b] as f32, aabb[6 * b + 1] as f32);
         entries[2 * j] = (u64::from(lo.to_bits()) << 32) | b as u64;
