@@ -149,6 +149,11 @@ inline void check_step(const mjModel* m, mjData* d, const Inputs& in, Writer& w)
     w.d("sensordata#" + i, d->sensordata, m->nsensordata);
     w.d("solver_fwdinv#" + i, d->solver_fwdinv, 2);  // mjENBL_FWDINV
     w.d("energy#" + i, d->energy, 2);
+    // what a renderer reads after the step
+    w.d("cam_xpos#" + i, d->cam_xpos, 3 * m->ncam);
+    w.d("cam_xmat#" + i, d->cam_xmat, 9 * m->ncam);
+    w.d("light_xpos#" + i, d->light_xpos, 3 * m->nlight);
+    w.d("light_xdir#" + i, d->light_xdir, 3 * m->nlight);
   }
 }
 

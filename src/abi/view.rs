@@ -91,23 +91,50 @@ macro_rules! data_views {
             #[inline(always)]
             pub unsafe fn new(m: &mjModel, d: &'a mut mjData) -> Self {
                 let slot = ViewSlot::of(d);
+                if (*slot).busy {
+                    // in use by a call below this one: its arrays may be lent out
+                    return Self::build(m, d);
+                }
                 if (*slot).holds(m, d) {
                     // the kept view's arrays, a new arena over the stack as it is now
                     let mut view: Self = std::ptr::read((*slot).image.as_ptr().cast());
                     std::ptr::write(&mut view.arena, Self::arena(d));
                     return view;
                 }
-                Self::build_and_keep(m, d, slot)
-            }
-
-            /// Builds the view from every array's length, and keeps it in `slot`.
-            #[inline(never)]
-            unsafe fn build_and_keep(m: &mjModel, d: &'a mut mjData, slot: *mut ViewSlot) -> Self {
-                let arena = Self::arena(d);
-                $(let $name = array_view(d.$name, row_len!(m, $d1, $($d2)+));)*
-                let view = Data { raw: d, arena, $($name,)* };
+                let view = Self::build(m, d);
                 (*slot).keep(m, &view);
                 view
+            }
+
+            /// Runs `f` on the view kept with `d`, in place (no copy); on a new one when the
+            /// kept view is in use by an outer call (a callback's call) or not of `m`.
+            ///
+            /// # Safety
+            /// As `new`.
+            #[inline(always)]
+            pub unsafe fn with<R>(m: &mjModel, d: &'a mut mjData, f: impl FnOnce(&mut Data<'a>) -> R) -> R {
+                let slot = ViewSlot::of(d);
+                if (*slot).busy || !(*slot).owns(d) {
+                    return f(&mut Self::build(m, d));
+                }
+                if !(*slot).holds(m, d) {
+                    let d2: *mut mjData = d;
+                    (*slot).keep(m, &Self::build(m, &mut *d2));
+                }
+                let view = (*slot).image.as_mut_ptr() as *mut Data<'a>;
+                std::ptr::write(&mut (*view).arena, Self::arena(d));
+                let _in_use = InUse::take(slot);
+                let r = f(&mut *view);
+                (*view).note_peak();
+                r
+            }
+
+            /// A view from every array's length.
+            #[inline(never)]
+            unsafe fn build(m: &mjModel, d: &'a mut mjData) -> Self {
+                let arena = Self::arena(d);
+                $(let $name = array_view(d.$name, row_len!(m, $d1, $($d2)+));)*
+                Data { raw: d, arena, $($name,)* }
             }
 
             /// The arena over the free part of `d`'s stack.
@@ -175,7 +202,32 @@ pub struct ViewSlot {
     owner: *const mjData,
     buffer: *const std::os::raw::c_void,
     model: *const mjModel,
+    /// Lent out by `Data::with` (its arrays may be swapped out for a while).
+    busy: bool,
     image: std::mem::MaybeUninit<Data<'static>>,
+}
+
+/// Marks a slot in use while alive; a panic through it forgets the view (it may have been
+/// left with an array swapped out).
+struct InUse(*mut ViewSlot);
+
+impl InUse {
+    unsafe fn take(slot: *mut ViewSlot) -> Self {
+        (*slot).busy = true;
+        InUse(slot)
+    }
+}
+
+impl Drop for InUse {
+    fn drop(&mut self) {
+        // SAFETY: the slot outlives the call that made this guard.
+        unsafe {
+            (*self.0).busy = false;
+            if std::thread::panicking() {
+                (*self.0).model = std::ptr::null();
+            }
+        }
+    }
 }
 
 impl ViewSlot {
@@ -201,6 +253,7 @@ impl ViewSlot {
         (*slot).owner = d;
         (*slot).buffer = d.buffer;
         (*slot).model = std::ptr::null();
+        (*slot).busy = false;
     }
 
     fn owns(&self, d: &mjData) -> bool {
@@ -235,12 +288,19 @@ impl Data<'_> {
     }
 }
 
-impl Drop for Data<'_> {
-    fn drop(&mut self) {
+impl Data<'_> {
+    /// The stack's high-water mark into `maxuse_stack`.
+    fn note_peak(&mut self) {
         let peak = self.arena.peak as i32;
         if peak > self.raw.maxuse_stack {
             self.raw.maxuse_stack = peak;
         }
+    }
+}
+
+impl Drop for Data<'_> {
+    fn drop(&mut self) {
+        self.note_peak();
     }
 }
 

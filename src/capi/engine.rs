@@ -49,8 +49,7 @@ pub(super) unsafe fn run<R>(
     }
     guard(name, fallback, || {
         let mv = Model::new(&*m);
-        let mut dv = Data::new(&*m, &mut *d);
-        f(&mv, &mut dv)
+        Data::with(&*m, &mut *d, |dv| f(&mv, dv))
     })
 }
 

@@ -20,13 +20,29 @@ use mjtTimer_::*;
 
 pub use super::tendon::tendon;
 
+/// Results a forward pass may leave out: a later pass of the same step overwrites them before
+/// anything can read them (see `transient`).
+#[derive(Clone, Copy, Default)]
+pub struct Omit {
+    /// Cameras and lights (mj_camlight).
+    pub cameras: bool,
+    /// Potential and kinetic energy.
+    pub energy: bool,
+}
+
 /// Position-dependent stage (mj_fwdPosition).
 pub fn fwd_position(m: &Model, d: &mut Data) -> Result<(), EngineError> {
+    position(m, d, Omit::default())
+}
+
+fn position(m: &Model, d: &mut Data, omit: Omit) -> Result<(), EngineError> {
     let start = now();
     let mut t = now();
     kinematics(m, d)?;
     com_pos(m, d)?;
-    camlight(m, d, false);
+    if !omit.cameras {
+        camlight(m, d, false);
+    }
     tendon(m, d)?;
     tick(d, mjTIMER_POS_KINEMATICS, t);
     t = now();
@@ -178,20 +194,20 @@ fn bad_state(m: &Model, d: &mut Data, kind: mjtWarning_, i: usize) -> Result<(),
 }
 
 type Stage = fn(&Model, &mut Data) -> Result<(), EngineError>;
+type PositionStage = fn(&Model, &mut Data, Omit) -> Result<(), EngineError>;
 
 /// The position and velocity stages not skipped, each followed by its sensors and energy:
 /// shared by forward and inverse dynamics, which differ only in the stage functions.
 pub fn pos_vel_stages(
     m: &Model,
     d: &mut Data,
-    skipstage: i32,
-    skipsensor: bool,
-    position: Stage,
+    (skipstage, skipsensor, omit): (i32, bool, Omit),
+    position: PositionStage,
     velocity: Stage,
 ) -> Result<(), EngineError> {
-    let energy = enabled(m, mjtEnableBit_::mjENBL_ENERGY);
+    let energy = enabled(m, mjtEnableBit_::mjENBL_ENERGY) && !omit.energy;
     if skipstage < mjtStage_::mjSTAGE_POS as i32 {
-        position(m, d)?;
+        position(m, d, omit)?;
         if !skipsensor {
             sensor_pos(m, d)?;
         }
@@ -218,8 +234,20 @@ pub fn forward_skip(
     skipstage: i32,
     skipsensor: bool,
 ) -> Result<(), EngineError> {
+    forward_pass(m, d, skipstage, skipsensor, Omit::default())
+}
+
+/// mj_forwardSkip leaving out `omit`.
+pub fn forward_pass(
+    m: &Model,
+    d: &mut Data,
+    skipstage: i32,
+    skipsensor: bool,
+    omit: Omit,
+) -> Result<(), EngineError> {
     let start = now();
-    pos_vel_stages(m, d, skipstage, skipsensor, fwd_position, fwd_velocity)?;
+    let stages = (skipstage, skipsensor, omit);
+    pos_vel_stages(m, d, stages, position, fwd_velocity)?;
     super::hooks::control(m, d);
     fwd_actuation(m, d)?;
     fwd_acceleration(m, d)?;
@@ -258,7 +286,13 @@ pub fn step_skip(
     let start = now();
     check_pos(m, d)?;
     check_vel(m, d)?;
-    forward_skip(m, d, skipstage, skipsensor)?;
+    let rk4 = m.raw.opt.integrator == mjtIntegrator_::mjINT_RK4 as i32;
+    let omit = if rk4 {
+        transient(m, !skipsensor)
+    } else {
+        Omit::default()
+    };
+    forward_pass(m, d, skipstage, skipsensor, omit)?;
     check_acc(m, d)?;
     check_fwdinv(m, d)?;
     match m.raw.opt.integrator {
@@ -273,6 +307,24 @@ pub fn step_skip(
     }
     tick(d, mjTIMER_STEP, start);
     Ok(())
+}
+
+/// What a forward pass followed by another in the same step may leave out: cameras, lights and
+/// energy, which the later pass overwrites (RK4 runs four passes a step), unless a user
+/// callback could read them in between, mjENBL_FWDINV compares the pass, or (`sensors`: the
+/// pass computes sensors) a sensor reads a camera.
+pub fn transient(m: &Model, sensors: bool) -> Omit {
+    if crate::runtime::callbacks::any_engine_callback() || enabled(m, mjtEnableBit_::mjENBL_FWDINV)
+    {
+        return Omit::default();
+    }
+    let camera = mjtObj_::mjOBJ_CAMERA as i32;
+    let reads_camera =
+        sensors && (m.sensor_objtype().contains(&camera) || m.sensor_reftype().contains(&camera));
+    Omit {
+        cameras: !reads_camera,
+        energy: true,
+    }
 }
 
 /// First half of mj_step, before the user sets controls and applied forces (mj_step1).

@@ -2,7 +2,7 @@
 //! qpos-space arithmetic.
 
 use super::derivative::smooth_vel;
-use super::forward::forward_skip;
+use super::forward::{forward_pass, transient, Omit};
 use super::inertia::{factor_i, solve_ld};
 use super::linalg::{add_to_scl, clip};
 use super::{Data, EngineError, Model, JNT_BALL, JNT_FREE, JNT_HINGE, JNT_SLIDE};
@@ -170,7 +170,13 @@ pub fn runge_kutta(m: &Model, d: &mut Data, n: usize) -> Result<(), EngineError>
         }
         d.raw.time = t[i - 1];
 
-        forward_skip(m, d, mjtStage_::mjSTAGE_NONE as i32, true)?;
+        // the last pass's cameras, lights and energy stay; earlier ones are overwritten
+        let omit = if i + 1 < n {
+            transient(m, false)
+        } else {
+            Omit::default()
+        };
+        forward_pass(m, d, mjtStage_::mjSTAGE_NONE as i32, true, omit)?;
         fs[i][..nv].copy_from_slice(d.qacc);
         if na > 0 {
             fs[i][nv..].copy_from_slice(d.act_dot);

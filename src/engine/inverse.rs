@@ -3,7 +3,7 @@
 
 use super::collision::collision;
 use super::constraint::make_constraint;
-use super::forward::{fwd_velocity, tendon, xfrc_accumulate};
+use super::forward::{fwd_velocity, tendon, xfrc_accumulate, Omit};
 use super::inertia::{crb, factor_m};
 use super::kinematics::{camlight, com_pos, kinematics};
 use super::linalg::dot;
@@ -17,6 +17,11 @@ use mjtTimer_::*;
 /// Position-dependent stage of inverse dynamics; transmission comes with the kinematics here
 /// and there is no constraint projection (mj_invPosition).
 pub fn inv_position(m: &Model, d: &mut Data) -> Result<(), EngineError> {
+    inv_position_stage(m, d, Omit::default())
+}
+
+/// inv_position as a stage of `pos_vel_stages` (which leaves nothing out of it).
+fn inv_position_stage(m: &Model, d: &mut Data, _: Omit) -> Result<(), EngineError> {
     let start = now();
     let mut t = now();
     kinematics(m, d)?;
@@ -72,7 +77,8 @@ pub fn inverse_skip(
     skipsensor: bool,
 ) -> Result<(), EngineError> {
     let start = now();
-    super::forward::pos_vel_stages(m, d, skipstage, skipsensor, inv_position, inv_velocity)?;
+    let stages = (skipstage, skipsensor, Omit::default());
+    super::forward::pos_vel_stages(m, d, stages, inv_position_stage, inv_velocity)?;
     inv_constraint(m, d)?;
     let nv = m.raw.nv as usize;
     let qacc = std::mem::take(&mut d.qacc);

@@ -34,6 +34,20 @@ pub fn reset() {
     }
 }
 
+/// Is any callback set that receives the model and data (all but mjcb_time)?
+pub fn any_engine_callback() -> bool {
+    // SAFETY: plain reads of the callback globals, as the C library does.
+    unsafe {
+        std::ptr::addr_of!(mjcb_passive).read().is_some()
+            || std::ptr::addr_of!(mjcb_control).read().is_some()
+            || std::ptr::addr_of!(mjcb_contactfilter).read().is_some()
+            || std::ptr::addr_of!(mjcb_sensor).read().is_some()
+            || std::ptr::addr_of!(mjcb_act_bias).read().is_some()
+            || std::ptr::addr_of!(mjcb_act_gain).read().is_some()
+            || std::ptr::addr_of!(mjcb_act_dyn).read().is_some()
+    }
+}
+
 /// Calls the user's mjcb_control or mjcb_passive (`passive`); false when it is not set.
 pub fn call_generic(passive: bool, m: &mjModel, d: &mut mjData) -> bool {
     // SAFETY: plain reads of the callback globals, as the C library does; the callback gets
