@@ -38,3 +38,35 @@ fn rays_like_the_reference() {
         &format!("rays: identical ids and distance bits ({summary})\n"),
     );
 }
+
+/// Height fields: capi-tests/ray_hfield.c fills models/extra/ray_hfield.xml's two fields with
+/// bumps and casts 42,900 rays with mj_rayHfield (and mj_ray) from points above, inside, beside
+/// and below them, in axis-aligned, vertical, grazing and other directions; the distance bits
+/// must equal the reference's.
+#[test]
+fn height_field_rays_like_the_reference() {
+    let src = [root().join("capi-tests/ray_hfield.c")];
+    let scene = model("extra/ray_hfield.xml");
+    let out = |lib| {
+        let prog = compile_c(&src, "ray_hfield", lib);
+        let o = run(&prog, &[&scene], &[], 120);
+        assert!(o.status.success(), "{}{}", text(&o.stdout), text(&o.stderr));
+        text(&o.stdout)
+    };
+    let (reference, ours) = (out(Lib::Ref), out(Lib::Ours));
+    // many rays must hit, or the test would prove little
+    let hits: usize = reference
+        .split_whitespace()
+        .nth(3)
+        .and_then(|h| h.parse().ok())
+        .unwrap_or(0);
+    assert!(hits > 5000, "{reference}");
+    assert_eq!(reference, ours, "height field rays differ");
+    report(
+        "ray-hfield",
+        &format!(
+            "height field rays: identical distance bits ({})\n",
+            reference.trim()
+        ),
+    );
+}

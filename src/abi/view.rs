@@ -314,6 +314,13 @@ impl std::fmt::Display for EngineError {
     }
 }
 
+/// 2.2.2's error when the stack runs out (out of line: allocations inline their fast path).
+#[cold]
+#[inline(never)]
+fn stack_overflow() -> EngineError {
+    EngineError("Stack overflow".into())
+}
+
 /// Stack-discipline scratch allocator over the free part of the `mjData` stack.
 ///
 /// Allocations live until the arena (or the `scope` that made them) ends.
@@ -343,10 +350,10 @@ impl<'a> Arena<'a> {
 
     /// `n` mjtNums holding whatever an earlier allocation left there (not zeroed, like
     /// mj_stackAlloc): for scratch the caller writes before it reads.
-    #[inline]
+    #[inline(always)]
     pub fn alloc_stale(&mut self, n: usize) -> Result<&'a mut [f64], EngineError> {
         if n > self.free.len() {
-            return Err(EngineError("Stack overflow".into()));
+            return Err(stack_overflow());
         }
         let free = std::mem::take(&mut self.free);
         let (head, tail) = free.split_at_mut(n);

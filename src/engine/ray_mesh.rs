@@ -166,8 +166,27 @@ pub fn ray_hfield(
     let rmin = (sy[0].min(sy[1]).floor() as i64 - 1).max(0);
     let rmax = (sy[0].max(sy[1]).ceil() as i64 + 1).min(nrow as i64 - 1);
     let h = |r: usize, c: usize| data[r * ncol + c] as f64 * size[2];
+    // 2.2.2 tests every cell of the rectangle; the nearest hit is the same if the cells far
+    // from the ray's footprint in the plane are left out: per row, those more than PAD cells
+    // beside where the ray's line crosses the row's strip (x keeps the smallest hit, whatever
+    // the order)
+    const PAD: f64 = 2.0;
+    let slope = (lvec[0] * dy) / (lvec[1] * dx);
+    let columns = |r: usize| -> (usize, usize) {
+        let (lo, hi) = (cmin.max(0) as usize, cmax.max(0) as usize);
+        let at = |gy: f64| sx[0] + (gy - sy[0]) * slope;
+        let (a, b) = (at(r as f64), at(r as f64 + 1.0));
+        let (c0, c1) = ((a.min(b) - PAD).floor(), (a.max(b) + PAD).ceil());
+        if !(c0.is_finite() && c1.is_finite()) {
+            return (lo, hi);
+        }
+        let c0 = c0.clamp(lo as f64, hi as f64) as usize;
+        let c1 = c1.clamp(lo as f64, hi as f64) as usize;
+        (c0, c1.max(c0))
+    };
     for r in rmin.max(0) as usize..rmax.max(0) as usize {
-        for c in cmin.max(0) as usize..cmax.max(0) as usize {
+        let (c0, c1) = columns(r);
+        for c in c0..c1 {
             let (x0, x1) = (dx * c as f64 - size[0], dx * (c + 1) as f64 - size[0]);
             let (y0, y1) = (dy * r as f64 - size[1], dy * (r + 1) as f64 - size[1]);
             let va = [
