@@ -6,7 +6,7 @@ use super::ray::{box_faces, to_local};
 use super::{Data, EngineError, Model, MINVAL};
 use crate::abi::mjtGeom_::*;
 use crate::math::misc::round;
-use crate::math::vec3::{cross, dist3, dot3, normalize3};
+use crate::math::vec3::{cross, dist3, dot3, norm3, normalize3};
 use crate::math::Vec3;
 
 /// Orthonormal basis (b0, b1) of the plane normal to the ray direction.
@@ -171,6 +171,8 @@ pub fn ray_hfield(
     // beside where the ray's line crosses the row's strip (x keeps the smallest hit, whatever
     // the order)
     const PAD: f64 = 2.0;
+    // a height gap far above rounding: the line passes the cell's triangles by more
+    let margin = 1e-6 * (1.0 + size[0] + size[1] + size[2] + norm3(&lpnt));
     let slope = (lvec[0] * dy) / (lvec[1] * dx);
     let columns = |r: usize| -> (usize, usize) {
         let (lo, hi) = (cmin.max(0) as usize, cmax.max(0) as usize);
@@ -184,11 +186,57 @@ pub fn ray_hfield(
         let c1 = c1.clamp(lo as f64, hi as f64) as usize;
         (c0, c1.max(c0))
     };
-    for r in rmin.max(0) as usize..rmax.max(0) as usize {
+    // rows in the order the ray meets them: once a hit is known, rows more than PAD beyond
+    // its row cannot hold a nearer one
+    let rows = rmin.max(0) as usize..rmax.max(0) as usize;
+    let ahead = lvec[1] < 0.0;
+    let nrows = rows.len();
+    for k in 0..nrows {
+        let r = if ahead {
+            rows.end - 1 - k
+        } else {
+            rows.start + k
+        };
+        if x >= 0.0 && lvec[1] != 0.0 {
+            let gy = (lpnt[1] + x * lvec[1] + size[1]) / dy;
+            let beyond = if ahead {
+                (r as f64 + 1.0) < gy - PAD
+            } else {
+                r as f64 > gy + PAD
+            };
+            if beyond {
+                break;
+            }
+        }
         let (c0, c1) = columns(r);
+        let (y0, y1) = (dy * r as f64 - size[1], dy * (r + 1) as f64 - size[1]);
+        // the whole row first, then cell by cell
+        let (xa, xb) = (dx * c0 as f64 - size[0], dx * c1 as f64 - size[0]);
+        if c1 > c0 {
+            // the range of the stored values (a NaN one is skipped: its triangles never hit)
+            let span = |i: usize| &data[i * ncol + c0..=i * ncol + c1];
+            let (mut lo, mut hi) = (f32::INFINITY, f32::NEG_INFINITY);
+            for &v in span(r).iter().chain(span(r + 1)) {
+                lo = if v < lo { v } else { lo };
+                hi = if v > hi { v } else { hi };
+            }
+            let heights = [lo as f64 * size[2], hi as f64 * size[2]];
+            if lo <= hi && clear_of(&lpnt, &lvec, [xa, xb, y0, y1], heights, margin) {
+                continue;
+            }
+        }
         for c in c0..c1 {
             let (x0, x1) = (dx * c as f64 - size[0], dx * (c + 1) as f64 - size[0]);
-            let (y0, y1) = (dy * r as f64 - size[1], dy * (r + 1) as f64 - size[1]);
+            let corners = [(r, c), (r, c + 1), (r + 1, c), (r + 1, c + 1)];
+            if clear_of(
+                &lpnt,
+                &lvec,
+                [x0, x1, y0, y1],
+                corners.map(|(i, j)| h(i, j)),
+                margin,
+            ) {
+                continue;
+            }
             let va = [
                 [x0, y0, h(r, c)],
                 [x1, y1, h(r + 1, c + 1)],
@@ -244,6 +292,48 @@ pub fn ray_hfield(
         }
     }
     Ok(x)
+}
+
+/// Does the line lpnt + t*lvec pass over the rectangle [x0, x1] x [y0, y1] wholly above or
+/// below `heights` (those of the grid points in it) by more than `margin`? Then it meets none
+/// of the triangles there. False when unsure (a vertical line, NaN).
+fn clear_of(
+    lpnt: &Vec3,
+    lvec: &Vec3,
+    [x0, x1, y0, y1]: [f64; 4],
+    heights: impl IntoIterator<Item = f64>,
+    margin: f64,
+) -> bool {
+    // the line's parameter range over the cell's footprint (an axis it does not move along
+    // leaves the range open)
+    let slab = |p: f64, v: f64, lo: f64, hi: f64| -> (f64, f64) {
+        if v == 0.0 {
+            (f64::NEG_INFINITY, f64::INFINITY)
+        } else {
+            let (a, b) = ((lo - p) / v, (hi - p) / v);
+            (a.min(b), a.max(b))
+        }
+    };
+    let (ax, bx) = slab(lpnt[0], lvec[0], x0, x1);
+    let (ay, by) = slab(lpnt[1], lvec[1], y0, y1);
+    let (t0, t1) = (ax.max(ay), bx.min(by));
+    if !(t0.is_finite() && t1.is_finite()) {
+        return false;
+    }
+    // hits behind the start do not count: only the part ahead (less `margin` of length)
+    let back = margin / norm3(lvec);
+    if t1 < -back {
+        return true;
+    }
+    let t0 = t0.max(-back);
+    let (z0, z1) = (lpnt[2] + t0 * lvec[2], lpnt[2] + t1 * lvec[2]);
+    let (zlo, zhi) = (z0.min(z1), z0.max(z1));
+    let (hmin, hmax) = heights
+        .into_iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+            (lo.min(v), hi.max(v))
+        });
+    zlo > hmax + margin || zhi < hmin - margin
 }
 
 /// mju_raySkin: nearest skin triangle hit (distance, or -1) and its vertex nearest to the hit.
