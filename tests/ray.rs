@@ -1,22 +1,29 @@
 //! Ray casting: capi-tests/ray.c casts 8,424 rays with mj_ray (filters, static geoms off,
 //! excluded bodies, direction lengths from 1e-8 to 1e160) against models/extra/ray_scene.xml,
 //! with every geom type, and each geom alone through mju_rayGeom, mj_rayMesh and mj_rayHfield.
-//! Geom ids and distance bits must equal the reference's.
+//! Geom ids and distance bits must equal the reference's. capi-tests/ray_hfield.c does the same
+//! for height fields.
 
 mod common;
 use common::*;
 
-#[test]
-fn rays_like_the_reference() {
-    let src = [root().join("capi-tests/ray.c")];
-    let scene = model("extra/ray_scene.xml");
+/// Output of capi-tests/NAME.c run on `scene` (under models/), built against the reference
+/// and against ours.
+fn both(name: &str, scene: &str) -> (String, String) {
+    let src = [root().join(format!("capi-tests/{name}.c"))];
+    let scene = model(scene);
     let out = |lib| {
-        let prog = compile_c(&src, "ray", lib);
+        let prog = compile_c(&src, name, lib);
         let o = run(&prog, &[&scene], &[], 120);
         assert!(o.status.success(), "{}{}", text(&o.stdout), text(&o.stderr));
         text(&o.stdout)
     };
-    let (reference, ours) = (out(Lib::Ref), out(Lib::Ours));
+    (out(Lib::Ref), out(Lib::Ours))
+}
+
+#[test]
+fn rays_like_the_reference() {
+    let (reference, ours) = both("ray", "extra/ray_scene.xml");
     let summary = reference
         .lines()
         .find(|l| l.starts_with("mj_ray:"))
@@ -45,15 +52,7 @@ fn rays_like_the_reference() {
 /// must equal the reference's.
 #[test]
 fn height_field_rays_like_the_reference() {
-    let src = [root().join("capi-tests/ray_hfield.c")];
-    let scene = model("extra/ray_hfield.xml");
-    let out = |lib| {
-        let prog = compile_c(&src, "ray_hfield", lib);
-        let o = run(&prog, &[&scene], &[], 120);
-        assert!(o.status.success(), "{}{}", text(&o.stdout), text(&o.stderr));
-        text(&o.stdout)
-    };
-    let (reference, ours) = (out(Lib::Ref), out(Lib::Ours));
+    let (reference, ours) = both("ray_hfield", "extra/ray_hfield.xml");
     // many rays must hit, or the test would prove little
     let hits: usize = reference
         .split_whitespace()

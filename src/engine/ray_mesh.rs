@@ -214,11 +214,12 @@ pub fn ray_hfield(
         let (xa, xb) = (dx * c0 as f64 - size[0], dx * c1 as f64 - size[0]);
         if c1 > c0 {
             // the range of the stored values (a NaN one is skipped: its triangles never hit)
-            let span = |i: usize| &data[i * ncol + c0..=i * ncol + c1];
             let (mut lo, mut hi) = (f32::INFINITY, f32::NEG_INFINITY);
-            for &v in span(r).iter().chain(span(r + 1)) {
-                lo = if v < lo { v } else { lo };
-                hi = if v > hi { v } else { hi };
+            for i in r..r + 2 {
+                for &v in &data[i * ncol + c0..=i * ncol + c1] {
+                    lo = if v < lo { v } else { lo };
+                    hi = if v > hi { v } else { hi };
+                }
             }
             let heights = [lo as f64 * size[2], hi as f64 * size[2]];
             if lo <= hi && clear_of(&lpnt, &lvec, [xa, xb, y0, y1], heights, margin) {
