@@ -193,10 +193,11 @@ macro_rules! data_ref_views {
 }
 mjdata_pointers!(data_ref_views);
 
-/// Room after an `mjData`'s array buffer (`alloc_data` makes it) for the view `Data::new` last
-/// built of it: building one computes every array's length (a fifth of an empty model's
-/// step), copying the kept one is a block move. The view is kept for one model; `owner` and
-/// `buffer` say the room is this data's own (a struct copied by value has another address).
+/// Room after an `mjData`'s array buffer (`alloc_data` makes it) for the view last built of it:
+/// building one computes every array's length (a fifth of an empty model's step); the C entry
+/// points use the kept one in place (`Data::with`), other callers copy it (`Data::new`). The
+/// view is kept for one model; `owner` and `buffer` say the room is this data's own (a struct
+/// copied by value has another address).
 #[repr(C)]
 pub struct ViewSlot {
     owner: *const mjData,
