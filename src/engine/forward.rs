@@ -194,7 +194,6 @@ fn bad_state(m: &Model, d: &mut Data, kind: mjtWarning_, i: usize) -> Result<(),
 }
 
 type Stage = fn(&Model, &mut Data) -> Result<(), EngineError>;
-type PositionStage = fn(&Model, &mut Data, Omit) -> Result<(), EngineError>;
 
 /// The position and velocity stages not skipped, each followed by its sensors and energy:
 /// shared by forward and inverse dynamics, which differ only in the stage functions.
@@ -202,12 +201,12 @@ pub fn pos_vel_stages(
     m: &Model,
     d: &mut Data,
     (skipstage, skipsensor, omit): (i32, bool, Omit),
-    position: PositionStage,
+    position: impl FnOnce(&Model, &mut Data) -> Result<(), EngineError>,
     velocity: Stage,
 ) -> Result<(), EngineError> {
     let energy = enabled(m, mjtEnableBit_::mjENBL_ENERGY) && !omit.energy;
     if skipstage < mjtStage_::mjSTAGE_POS as i32 {
-        position(m, d, omit)?;
+        position(m, d)?;
         if !skipsensor {
             sensor_pos(m, d)?;
         }
@@ -247,7 +246,7 @@ pub fn forward_pass(
 ) -> Result<(), EngineError> {
     let start = now();
     let stages = (skipstage, skipsensor, omit);
-    pos_vel_stages(m, d, stages, position, fwd_velocity)?;
+    pos_vel_stages(m, d, stages, |m, d| position(m, d, omit), fwd_velocity)?;
     super::hooks::control(m, d);
     fwd_actuation(m, d)?;
     fwd_acceleration(m, d)?;

@@ -17,11 +17,6 @@ use mjtTimer_::*;
 /// Position-dependent stage of inverse dynamics; transmission comes with the kinematics here
 /// and there is no constraint projection (mj_invPosition).
 pub fn inv_position(m: &Model, d: &mut Data) -> Result<(), EngineError> {
-    inv_position_stage(m, d, Omit::default())
-}
-
-/// inv_position as a stage of `pos_vel_stages` (which leaves nothing out of it).
-fn inv_position_stage(m: &Model, d: &mut Data, _: Omit) -> Result<(), EngineError> {
     let start = now();
     let mut t = now();
     kinematics(m, d)?;
@@ -78,7 +73,7 @@ pub fn inverse_skip(
 ) -> Result<(), EngineError> {
     let start = now();
     let stages = (skipstage, skipsensor, Omit::default());
-    super::forward::pos_vel_stages(m, d, stages, inv_position_stage, inv_velocity)?;
+    super::forward::pos_vel_stages(m, d, stages, inv_position, inv_velocity)?;
     inv_constraint(m, d)?;
     let nv = m.raw.nv as usize;
     let qacc = std::mem::take(&mut d.qacc);
