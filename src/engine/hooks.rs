@@ -39,6 +39,11 @@ pub fn sensor(m: &Model, d: &mut Data, top: usize, stage: i32) {
     marked(d.raw, top, |raw| callbacks::call_sensor(m.raw, raw, stage));
 }
 
+/// Is mjcb_contactfilter set?
+pub fn contact_filter_set() -> bool {
+    callbacks::contactfilter_set()
+}
+
 /// mjcb_contactfilter of a dynamic geom pair: Some(true) discards; None when not set.
 pub fn contact_filter(m: &Model, d: &mut Data, top: usize, g1: usize, g2: usize) -> Option<bool> {
     marked(d.raw, top, |raw| {

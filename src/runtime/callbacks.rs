@@ -113,6 +113,12 @@ pub fn call_contactfilter(m: &mjModel, d: &mut mjData, g1: usize, g2: usize) -> 
     }
 }
 
+/// Is mjcb_contactfilter set?
+pub fn contactfilter_set() -> bool {
+    // SAFETY: as in call_generic.
+    unsafe { std::ptr::addr_of!(mjcb_contactfilter).read().is_some() }
+}
+
 /// Is mjcb_time set?
 pub fn time_set() -> bool {
     // SAFETY: as in call_generic.

@@ -14,6 +14,7 @@ pub mod primitive;
 #[cfg(test)]
 mod tests;
 use crate::abi::*;
+use crate::engine::hooks;
 use crate::engine::support::warning;
 use crate::engine::{disabled, enabled, Data, EngineError, Model};
 use crate::math::spatial::make_frame;
@@ -38,21 +39,24 @@ fn plane_dist(d: &Data, plane: usize, g: usize) -> f64 {
     vec3::dot3(&dif, &[mat[2], mat[5], mat[8]])
 }
 
-/// Built-in filter of dynamic pairs (mj_contactFilter): true discards.
-fn filtered(m: &Model, g1: usize, g2: usize) -> bool {
-    let weld = |g: usize| m.body_weldid()[m.geom_bodyid()[g] as usize];
-    let (w1, w2) = (weld(g1), weld(g2));
+/// The built-in filter (mj_contactFilter) discards a dynamic geom pair when its bodies' weld
+/// bodies are the same or parent and child (unless filterparent is disabled or one is the
+/// world), or when the geoms' masks do not match (can_pair); the collision loop applies it a
+/// body pair and a geom at a time. This is its test of the weld bodies: true discards every
+/// geom pair of the two.
+#[inline]
+fn welds_filtered(m: &Model, w1: i32, w2: i32) -> bool {
     let wparent = |w: i32| m.body_weldid()[m.body_parentid()[w as usize] as usize];
-    let (ct1, ca1) = (m.geom_contype()[g1], m.geom_conaffinity()[g1]);
-    let (ct2, ca2) = (m.geom_contype()[g2], m.geom_conaffinity()[g2]);
-    if ct1 & ca2 == 0 && ct2 & ca1 == 0 {
-        return true;
-    }
     if w1 == w2 {
         return true;
     }
     let filterparent = !disabled(m, mjtDisableBit_::mjDSBL_FILTERPARENT) && w1 != 0 && w2 != 0;
     filterparent && (w1 == wparent(w2) || w2 == wparent(w1))
+}
+
+/// Can geoms of these (contype, conaffinity) masks collide (the built-in filter's mask test)?
+fn can_pair((ct1, ca1): (i32, i32), (ct2, ca2): (i32, i32)) -> bool {
+    ct1 & ca2 != 0 || ct2 & ca1 != 0
 }
 
 /// Contact parameters of a geom pair: condim, friction (5), solref, solimp, margin, gap.
@@ -150,7 +154,17 @@ fn dedup_box_box(con: &mut [ContactGeom], n: usize) -> usize {
     k
 }
 
-/// Tests one geom pair (mj_collideGeoms): `pair` is the explicit pair's index, if any.
+/// Where a geom pair comes from.
+#[derive(Clone, Copy)]
+enum Source {
+    /// An explicit pair: its index.
+    Pair(usize),
+    /// The broad phase: `filtered` is the built-in filter's verdict, which stands unless a
+    /// user filter (mjcb_contactfilter) is set.
+    Dynamic { filtered: bool },
+}
+
+/// Tests one geom pair (mj_collideGeoms).
 /// Returns Ok(false) when the contact buffer is full (2.2.2 stops adding then).
 /// `top`: the stack in use (a user contact filter allocates above it).
 fn collide_geoms(
@@ -159,7 +173,7 @@ fn collide_geoms(
     top: usize,
     g1: usize,
     g2: usize,
-    pair: Option<usize>,
+    source: Source,
     con: &mut Contacts,
 ) -> Result<bool, EngineError> {
     let (g1, g2) = if m.geom_type()[g1] > m.geom_type()[g2] {
@@ -171,12 +185,15 @@ fn collide_geoms(
     if !narrow::has_collider(t1, t2) {
         return Ok(true);
     }
-    if pair.is_none() {
-        let user = crate::engine::hooks::contact_filter(m, d, top, g1, g2);
-        if user.unwrap_or_else(|| filtered(m, g1, g2)) {
-            return Ok(true);
+    let pair = match source {
+        Source::Pair(p) => Some(p),
+        Source::Dynamic { filtered } => {
+            if hooks::contact_filter(m, d, top, g1, g2).unwrap_or(filtered) {
+                return Ok(true);
+            }
+            None
         }
-    }
+    };
     let (margin, gap) = match pair {
         None => (
             m.geom_margin()[g1].max(m.geom_margin()[g2]),
@@ -284,7 +301,7 @@ pub fn collision(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     if m.raw.opt.collision == mjtCollision_::mjCOL_PAIR as i32 {
         for p in 0..npair {
             let (g1, g2) = (m.pair_geom1()[p] as usize, m.pair_geom2()[p] as usize);
-            collide_geoms(m, d, d.arena.used(), g1, g2, Some(p), &mut con)?;
+            collide_geoms(m, d, d.arena.used(), g1, g2, Source::Pair(p), &mut con)?;
         }
         return Ok(());
     }
@@ -305,7 +322,7 @@ pub fn collision(m: &Model, d: &mut Data) -> Result<(), EngineError> {
                         m.pair_geom1()[pairadr] as usize,
                         m.pair_geom2()[pairadr] as usize,
                     );
-                    collide_geoms(m, d, a.used(), g1, g2, Some(pairadr), &mut con)?;
+                    collide_geoms(m, d, a.used(), g1, g2, Source::Pair(pairadr), &mut con)?;
                     pairadr += 1;
                 }
             }
@@ -319,16 +336,46 @@ pub fn collision(m: &Model, d: &mut Data) -> Result<(), EngineError> {
             if n1 == 0 || n2 == 0 {
                 continue;
             }
+            // pairs the built-in filter discards are skipped here unless a user filter is to
+            // see each (the filter, or a warning handler, may set one between two calls)
+            let (w1, w2) = (m.body_weldid()[b1], m.body_weldid()[b2]);
+            let welded = welds_filtered(m, w1, w2);
+            if welded && !hooks::contact_filter_set() {
+                continue;
+            }
             let (a1, a2) = (m.body_geomadr()[b1] as usize, m.body_geomadr()[b2] as usize);
-            for g1 in a1..a1 + n1 as usize {
-                for g2 in a2..a2 + n2 as usize {
+            let (geoms1, geoms2) = (a1..a1 + n1 as usize, a2..a2 + n2 as usize);
+            let (contype, conaffinity) = (m.geom_contype(), m.geom_conaffinity());
+            let mask = |g: usize| (contype[g], conaffinity[g]);
+            let masks2 = geoms2
+                .clone()
+                .fold((0, 0), |(t, a), g| (t | contype[g], a | conaffinity[g]));
+            for g1 in geoms1 {
+                // a geom that pairs with none of the other body's geoms
+                if n2 > 1 && !can_pair(mask(g1), masks2) && !hooks::contact_filter_set() {
+                    continue;
+                }
+                for g2 in geoms2.clone() {
+                    let paired = can_pair(mask(g1), mask(g2));
+                    if !paired && !hooks::contact_filter_set() {
+                        continue;
+                    }
                     let listed = merged
                         && (start..pairadr).any(|k| {
                             let (p1, p2) = (m.pair_geom1()[k] as usize, m.pair_geom2()[k] as usize);
                             (p1 == g1 && p2 == g2) || (p1 == g2 && p2 == g1)
                         });
                     if !listed {
-                        collide_geoms(m, d, a.used(), g1, g2, None, &mut con)?;
+                        let filtered = welded || !paired;
+                        collide_geoms(
+                            m,
+                            d,
+                            a.used(),
+                            g1,
+                            g2,
+                            Source::Dynamic { filtered },
+                            &mut con,
+                        )?;
                     }
                 }
             }
@@ -339,7 +386,7 @@ pub fn collision(m: &Model, d: &mut Data) -> Result<(), EngineError> {
                     m.pair_geom1()[pairadr] as usize,
                     m.pair_geom2()[pairadr] as usize,
                 );
-                collide_geoms(m, d, a.used(), g1, g2, Some(pairadr), &mut con)?;
+                collide_geoms(m, d, a.used(), g1, g2, Source::Pair(pairadr), &mut con)?;
                 pairadr += 1;
             }
         }
