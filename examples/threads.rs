@@ -2,7 +2,8 @@
 //! stepping its own simulation while others load models and use thread-local error hooks. Every
 //! thread's final state is bit-identical to a run on the main thread.
 //!
-//! `cargo run --release --example threads -- [MODEL.xml ...]` prints "<file> same" per model.
+//! `cargo run --release --example threads -- [--steps N] [MODEL.xml ...]` prints "<file> same"
+//! per model (N steps per run, 300 by default).
 //! The test suite also runs it under ThreadSanitizer (tests/threads.rs).
 
 use mujoco::abi::{mjData, mjModel, mjVFS};
@@ -23,7 +24,8 @@ extern "C" {
 
 const STEPPERS: usize = 4;
 const LOADERS: usize = 2;
-const STEPS: usize = 300;
+/// Steps per run: --steps N, else 300.
+static STEPS: std::sync::OnceLock<usize> = std::sync::OnceLock::new();
 
 unsafe extern "C" fn quiet(_msg: *const c_char) {}
 
@@ -42,7 +44,7 @@ fn load(file: &str) -> Option<*mut mjModel> {
     (!m.is_null()).then_some(m)
 }
 
-/// qpos, qvel and act after STEPS driven steps from keyframe 0 (or the reset state).
+/// qpos, qvel and act after the driven steps from keyframe 0 (or the reset state).
 fn simulate(m: Shared) -> Vec<f64> {
     // SAFETY: m is a loaded model; d is made for it and freed here.
     unsafe {
@@ -57,7 +59,7 @@ fn simulate(m: Shared) -> Vec<f64> {
             (*m).na as usize,
             (*m).nu as usize,
         );
-        for s in 0..STEPS {
+        for s in 0..*STEPS.get().unwrap_or(&300) {
             for i in 0..nu {
                 *(*d).ctrl.add(i) = (0.01 * s as f64 * (1.0 + 0.3 * i as f64) + i as f64).sin();
             }
@@ -139,7 +141,12 @@ fn run_threads(model: Shared, file: &str) -> Vec<Vec<f64>> {
 fn main() {
     // SAFETY: set before any other thread runs.
     unsafe { mju_user_warning = Some(quiet) };
-    let files: Vec<String> = std::env::args().skip(1).collect();
+    let mut files: Vec<String> = std::env::args().skip(1).collect();
+    if files.first().map(String::as_str) == Some("--steps") && files.len() > 1 {
+        let n = files[1].parse().expect("--steps N: a number of steps");
+        STEPS.set(n).unwrap();
+        files.drain(..2);
+    }
     let files = if files.is_empty() {
         vec!["models/chain.xml".to_string()]
     } else {

@@ -51,47 +51,67 @@ fn corpus() -> Option<&'static [Model]> {
         let bin = harness_bin();
         let base = work_dir("corpus");
         let main = main_corpus_files();
-        par_map(&corpus_files(), |i, f| {
-            let rel = dirs
-                .iter()
-                .find_map(|d| f.strip_prefix(d.parent().unwrap_or(d)).ok())
-                .unwrap_or(f)
-                .display()
-                .to_string();
-            check(&bin, f, &base.join(i.to_string()), main.contains(f), rel)
-        })
+        let files = corpus_files();
+        let dir = |i: usize| base.join(i.to_string()).to_string_lossy().into_owned();
+        // the compiled models first (small runs: they tell the size and whether ours loads
+        // the model), then the physics of those both load, the largest first, so that no
+        // large model is left running alone at the end
+        let compiled = par_map(&files, |i, f| compile(&bin, f, &dir(i)));
+        let mut order: Vec<usize> = (0..files.len())
+            .filter(|&i| matches!(compiled[i], (Some((true, _)), nv) if nv <= MAX_NV))
+            .collect();
+        order.sort_by_key(|&i| std::cmp::Reverse(compiled[i].1));
+        let mut runs = par_map(&order, |_, &i| {
+            let (f, ds) = (&files[i], dir(i));
+            let p = physics(&bin, f, &f.to_string_lossy(), &ds, main.contains(f));
+            let _ = std::fs::remove_dir_all(&ds);
+            (i, p)
+        });
+        runs.sort_by_key(|(i, _)| *i);
+        let mut runs = runs.into_iter().peekable();
+        compiled
+            .into_iter()
+            .enumerate()
+            .map(|(i, (compiled, _))| {
+                let rel = dirs
+                    .iter()
+                    .find_map(|d| files[i].strip_prefix(d.parent().unwrap_or(d)).ok())
+                    .unwrap_or(&files[i])
+                    .display()
+                    .to_string();
+                let physics = match (&compiled, runs.peek()) {
+                    (_, Some((j, _))) if *j == i => runs.next().unwrap().1,
+                    (None, _) => Physics::Skipped, // include files, malformed models
+                    (Some((false, _)), _) => {
+                        Physics::Unsupported(format!("{}: compiler", files[i].display()))
+                    }
+                    (Some((true, _)), _) => Physics::Skipped, // nv above MAX_NV
+                };
+                Model {
+                    rel,
+                    compiled,
+                    physics,
+                }
+            })
+            .collect()
     }))
 }
 
-/// The compiled model first (small: it tells the size and whether ours loads it), then, for a
-/// model both load, the physics; `smooth`: also the run with constraints and contacts disabled.
-fn check(bin: &Path, f: &Path, dir: &Path, smooth: bool, rel: String) -> Model {
-    let _ = std::fs::remove_dir_all(dir);
-    let (fs, ds) = (
-        f.to_string_lossy().to_string(),
-        dir.to_string_lossy().to_string(),
-    );
+/// The compiled-model comparison (None: the reference rejects the file) and the model's nv.
+fn compile(bin: &Path, f: &Path, ds: &str) -> (Option<(bool, String)>, i32) {
+    let _ = std::fs::remove_dir_all(ds);
     let compiled = harness_compare(
         bin,
-        &fs,
-        &ds,
+        &f.to_string_lossy(),
+        ds,
         &["--model-only"],
         &["--groups", "model"],
         120,
     )
     .map(|(ok, out)| (ok, out.lines().next().unwrap_or("").trim().to_string()));
-    let physics = match &compiled {
-        None => Physics::Skipped, // include files and deliberately malformed models
-        Some((false, _)) => Physics::Unsupported(format!("{}: compiler", f.display())),
-        Some((true, _)) if model_nv(&ds) > MAX_NV => Physics::Skipped,
-        Some((true, _)) => physics(bin, f, &fs, &ds, smooth),
-    };
-    let _ = std::fs::remove_dir_all(dir);
-    Model {
-        rel,
-        compiled,
-        physics,
-    }
+    let nv = model_nv(ds);
+    let _ = std::fs::remove_dir_all(ds);
+    (compiled, nv)
 }
 
 fn physics(bin: &Path, f: &Path, fs: &str, ds: &str, smooth: bool) -> Physics {

@@ -1,4 +1,5 @@
-//! 10,000-step runs: no NaN and no warning the reference does not also give, no crash, no hang.
+//! 10,000-step runs (2,000 for models of more than 100 bodies: composites, crowds of humanoids):
+//! no NaN and no warning the reference does not also give, no crash, no hang.
 //! Models: capi-tests/models.list (must match), then the models of models-extra.list and the
 //! main corpus (../shared/corpus or the dm_control suite, when present) that both libraries
 //! load: a run our engine stops with "not implemented" is counted as not supported yet,
@@ -76,7 +77,7 @@ fn ten_thousand_steps_like_the_reference() {
         }
     }
     let msg = format!(
-        "long runs ({STEPS} steps): {same} models end like the reference (NaN, warnings); \
+        "long runs ({STEPS} steps, 2000 above 100 bodies): {same} models end like the reference (NaN, warnings); \
          {unsupported} stop on features not supported yet; {} differ; {skipped} files skipped \
          (the reference rejects or stops)\n{}",
         wrong.len(),

@@ -323,7 +323,9 @@ fn pixel_lines(out: &str) -> Vec<&str> {
 
 /// Every task of the suite, quadruped/escape included (its terrain goes up through
 /// mjr_uploadHField): physics numbers and physics.render frames (RGB from cameras -1 and 0,
-/// depth, segmentation) under EGL for 200 steps, and under OSMesa for a shorter run.
+/// depth, segmentation) under EGL for 200 steps; under OSMesa (the same llvmpipe behind
+/// another context) a shorter run of tasks with height fields, meshes, textures and many
+/// bodies.
 #[test]
 fn dm_control_suite_same_numbers_and_pixels() {
     let egl = same_output(
@@ -337,9 +339,21 @@ fn dm_control_suite_same_numbers_and_pixels() {
         "dm-control-osmesa",
         Gl::Osmesa,
         "tests/python/dmc.py",
-        &["20", "--render"],
+        &[
+            "20",
+            "--render",
+            "quadruped/escape",
+            "dog/fetch",
+            "humanoid_CMU/run",
+            "manipulator/bring_ball",
+            "fish/swim",
+            "cartpole/swingup",
+        ],
         900,
     );
+    if let Some(out) = &osmesa {
+        assert_eq!(out.lines().count(), 6, "{out}");
+    }
     if let Some(out) = egl.as_ref().or(osmesa.as_ref()) {
         assert_eq!(pixel_lines(out).len(), out.lines().count(), "{out}");
         assert!(out.contains("quadruped/escape"), "{out}");

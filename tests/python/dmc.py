@@ -5,7 +5,9 @@ With --render (needs MUJOCO_GL=egl or osmesa), each task also renders through
 physics.render at reset, half way and at the end: RGB from the free camera (-1) and from camera
 0 where the model has one, and at the end a depth and a segmentation image (and, for height
 fields, RGB again after a second reset); one line per task with a digest of all the pixel arrays
-and the figures of the last RGB frame."""
+and the figures of the last RGB frame.
+
+Usage: dmc.py [STEPS] [--render] [DOMAIN/TASK ...] [-DOMAIN/TASK ...]"""
 
 import hashlib
 import sys
@@ -18,7 +20,9 @@ args = sys.argv[1:]
 RENDER = "--render" in args
 args = [a for a in args if a != "--render"]
 STEPS = int(args[0]) if args else 200
-without = args[1:]  # domain/task names left out
+# domain/task names: "-name" leaves a task out; given names alone, only those run
+only = [a for a in args[1:] if not a.startswith("-")]
+without = [a[1:] for a in args[1:] if a.startswith("-")]
 HEIGHT, WIDTH = 48, 64
 
 
@@ -45,7 +49,7 @@ def render(phys, pixels, frames, final):
 
 
 for domain, task in suite.ALL_TASKS:
-    if f"{domain}/{task}" in without:
+    if f"{domain}/{task}" in without or (only and f"{domain}/{task}" not in only):
         continue
     env = suite.load(domain, task, task_kwargs={"random": 7})
     spec = env.action_spec()
