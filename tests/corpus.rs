@@ -114,6 +114,8 @@ fn compile(bin: &Path, f: &Path, ds: &str) -> (Option<(bool, String)>, i32) {
     (compiled, nv)
 }
 
+/// The physics of a model both libraries load; `smooth`: also the run with constraints and
+/// contacts disabled.
 fn physics(bin: &Path, f: &Path, fs: &str, ds: &str, smooth: bool) -> Physics {
     let rel = f.display().to_string();
     // smooth dynamics: constraints and contacts off on both sides
