@@ -61,31 +61,34 @@ fn corpus() -> Option<&'static [Model]> {
             .filter(|&i| matches!(compiled[i], (Some((true, _)), nv) if nv <= MAX_NV))
             .collect();
         order.sort_by_key(|&i| std::cmp::Reverse(compiled[i].1));
-        let mut runs = par_map(&order, |_, &i| {
+        let mut runs: Vec<Option<Physics>> = (0..files.len()).map(|_| None).collect();
+        let done = par_map(&order, |_, &i| {
             let (f, ds) = (&files[i], dir(i));
             let p = physics(&bin, f, &f.to_string_lossy(), &ds, main.contains(f));
             let _ = std::fs::remove_dir_all(&ds);
-            (i, p)
+            p
         });
-        runs.sort_by_key(|(i, _)| *i);
-        let mut runs = runs.into_iter().peekable();
+        for (&i, p) in order.iter().zip(done) {
+            runs[i] = Some(p);
+        }
         compiled
             .into_iter()
+            .zip(runs)
             .enumerate()
-            .map(|(i, (compiled, _))| {
+            .map(|(i, ((compiled, _), run))| {
                 let rel = dirs
                     .iter()
                     .find_map(|d| files[i].strip_prefix(d.parent().unwrap_or(d)).ok())
                     .unwrap_or(&files[i])
                     .display()
                     .to_string();
-                let physics = match (&compiled, runs.peek()) {
-                    (_, Some((j, _))) if *j == i => runs.next().unwrap().1,
-                    (None, _) => Physics::Skipped, // include files, malformed models
-                    (Some((false, _)), _) => {
+                let physics = match (run, &compiled) {
+                    (Some(p), _) => p,
+                    (None, None) => Physics::Skipped, // include files, malformed models
+                    (None, Some((false, _))) => {
                         Physics::Unsupported(format!("{}: compiler", files[i].display()))
                     }
-                    (Some((true, _)), _) => Physics::Skipped, // nv above MAX_NV
+                    (None, Some((true, _))) => Physics::Skipped, // nv above MAX_NV
                 };
                 Model {
                     rel,
