@@ -25,9 +25,11 @@ static inline void in_child(void (*fn)(const char*), const char* file, int secon
   }
   close(fd[1]);
   int ws = 0, done = 0;
-  for (int t = 0; t < 100 * seconds && !done; t++) {
+  // short naps first (most children end within milliseconds), then 10 ms ones
+  for (long waited = 0, nap = 500; waited < 1000000L * seconds && !done; waited += nap) {
+    nap = waited < 200000 ? 500 : 10000;
     if (waitpid(pid, &ws, WNOHANG) == pid) done = 1;
-    else usleep(10000);
+    else usleep(nap);
   }
   if (!done) {
     kill(pid, SIGKILL);

@@ -5,8 +5,8 @@
 //!   with other values; the report (corpus.txt) counts identical models;
 //!   RUJOCO_CORPUS_STRICT=1 requires every model identical;
 //! - physics, for every model both libraries load: full physics (mj_forward, mj_step and
-//!   collision detection at 50 states of the reference's trajectory: harness groups forward,
-//!   step, collision), and, on the main corpus, smooth dynamics with constraints and contacts
+//!   collision detection at 50 states of the reference's trajectory, 10 above nv 60: harness
+//!   groups forward, step, collision), and, on the main corpus, smooth dynamics with constraints and contacts
 //!   disabled on both sides (forward and the body Jacobians), compared within the group
 //!   tolerances raised to 1000x the reference's noise floor. A model our engine stops on with
 //!   "not implemented" is counted, never one that differs. Report: physics-corpus.txt.
@@ -20,6 +20,10 @@ use std::sync::OnceLock;
 /// (humanoid100, nv 2700, stays in; the 1000-particle composite, nv 3000, with its contacts,
 /// does not).
 const MAX_NV: i32 = 2700;
+
+/// Models larger than this (nv) are checked at 10 states of the trajectory instead of 50: their
+/// state checks and dumps took most of the test's time.
+const FEW_STATES_NV: i32 = 60;
 
 /// What one model's physics gave.
 enum Physics {
@@ -64,7 +68,8 @@ fn corpus() -> Option<&'static [Model]> {
         let mut runs: Vec<Option<Physics>> = (0..files.len()).map(|_| None).collect();
         let done = par_map(&order, |_, &i| {
             let (f, ds) = (&files[i], dir(i));
-            let p = physics(&bin, f, &f.to_string_lossy(), &ds, main.contains(f));
+            let nv = compiled[i].1;
+            let p = physics(&bin, f, &f.to_string_lossy(), &ds, main.contains(f), nv);
             let _ = std::fs::remove_dir_all(&ds);
             p
         });
@@ -119,11 +124,20 @@ fn compile(bin: &Path, f: &Path, ds: &str) -> (Option<(bool, String)>, i32) {
 
 /// The physics of a model both libraries load; `smooth`: also the run with constraints and
 /// contacts disabled.
-fn physics(bin: &Path, f: &Path, fs: &str, ds: &str, smooth: bool) -> Physics {
+fn physics(bin: &Path, f: &Path, fs: &str, ds: &str, smooth: bool, nv: i32) -> Physics {
     let rel = f.display().to_string();
+    let states: &[&str] = if nv > FEW_STATES_NV {
+        &["--states", "10"]
+    } else {
+        &[]
+    };
     // smooth dynamics: constraints and contacts off on both sides
     let g = ["--groups", "forward,jacBody,jacSite"];
-    let smooth_run = ["--groups", "forward,jacBody,jacSite", "--disable", "17"];
+    let smooth_run = [
+        &["--groups", "forward,jacBody,jacSite", "--disable", "17"],
+        states,
+    ]
+    .concat();
     let smooth = match smooth
         .then(|| harness_compare(bin, fs, ds, &smooth_run, &g, 600))
         .flatten()
@@ -135,7 +149,8 @@ fn physics(bin: &Path, f: &Path, fs: &str, ds: &str, smooth: bool) -> Physics {
         _ => Ok(false),
     };
     let g = ["--groups", "forward,step,collision"];
-    let Some((ok, out)) = harness_compare(bin, fs, ds, &g, &g, 600) else {
+    let full_run = [&g[..], states].concat();
+    let Some((ok, out)) = harness_compare(bin, fs, ds, &full_run, &g, 600) else {
         return Physics::Skipped; // the reference stops on this model
     };
     let full = if ok {
@@ -224,7 +239,7 @@ fn corpus_physics() {
         }
     }
     let msg = format!(
-        "physics corpus (forward, step, collision at 50 states): {same} of {} models at parity \
+        "physics corpus (forward, step, collision at 50 states, 10 above nv {FEW_STATES_NV}): {same} of {} models at parity \
          (worst relative error {worst:.2e}); {} stop on features not supported yet; {} differ; \
          {skipped} skipped (reference rejects or stops, or nv > {MAX_NV}); with constraints and \
          contacts disabled (main corpus), forward and Jacobians at parity on {smooth}\n{}{}",

@@ -5,7 +5,8 @@
 //   harness-ours replay  MODEL DIR   our run: the same checks at the reference's states -> DIR/ours
 //   (record/replay MODEL DIR --model-only: the compiled model only; --groups a,b: those check
 //   groups only, plus forward, which the others read; --disable FLAGS: or FLAGS into
-//   opt.disableflags of every model, e.g. 3 = constraints and contacts off)
+//   opt.disableflags of every model, e.g. 3 = constraints and contacts off; record --states N:
+//   N states along the trajectory instead of 50, for large models)
 //   harness-ref  compare DIR [-v] [--groups a,b]   worst relative error per quantity, exit 1 on
 //                                    any failure (all groups, or the listed ones)
 //
@@ -38,6 +39,7 @@ namespace {
 
 std::string g_status;  // status file of the running check group
 int g_disable = 0;     // --disable: flags or-ed into opt.disableflags of every model run
+int g_state_every = kStateEvery;  // --states N: a state every kSteps / N steps
 
 void write_status(const std::string& path, const std::string& text) {
   std::string line = text;  // one line: messages may hold newlines
@@ -80,7 +82,9 @@ bool isolated(const std::string& status, const std::function<std::string()>& fn,
     _exit(0);
   }
   int ws = 0;
-  for (int t = 0; t < seconds * 100; t++) {
+  // short naps first (most groups end within milliseconds), then 10 ms ones
+  for (long waited = 0, nap = 500; waited < seconds * 1000000L; waited += nap) {
+    nap = waited < 200000 ? 500 : 10000;
     if (waitpid(pid, &ws, WNOHANG) == pid) {
       if (WIFSIGNALED(ws)) {
         write_status(status, std::string("crashed: signal ") + std::to_string(WTERMSIG(ws)) + " (" +
@@ -90,7 +94,7 @@ bool isolated(const std::string& status, const std::function<std::string()>& fn,
       }
       return read_status(status) == "ok";
     }
-    usleep(10000);
+    usleep(nap);
   }
   kill(pid, SIGKILL);
   waitpid(pid, &ws, 0);
@@ -130,13 +134,23 @@ int record(const char* model, const std::string& dir, bool model_only, const std
     return saved(w, out + "model.bin");
   }, kSeconds);
   if (model_only) return ok ? 0 : 1;
+  // the groups below share one load: each child runs on its own copy of the parent's memory
+  // (a model that failed to load above is loaded, and fails, in each child as before)
+  mjModel* shared = nullptr;
+  if (ok) {
+    mju_user_warning = on_warning;
+    std::string e;
+    shared = load(model, e);
+    mju_user_warning = nullptr;
+  }
+  auto child_model = [&](std::string& e) { return shared ? shared : load(model, e); };
   ok = isolated(out + "traj.status", [&]() -> std::string {
     std::string e;
-    mjModel* m = load(model, e);
+    mjModel* m = child_model(e);
     if (!m) return e;
     mjData* d = mj_makeData(m);
     Writer traj, states;
-    run_trajectory(m, d, traj, &states);
+    run_trajectory(m, d, traj, &states, false, g_state_every);
     std::string r = saved(states, dir + "/states.bin");
     return r.empty() ? saved(traj, out + "traj.bin") : r;
   }, kSeconds) && ok;
@@ -145,7 +159,7 @@ int record(const char* model, const std::string& dir, bool model_only, const std
   checks.push_back({"noise", check_noise});
   isolated(out + "trajnoise.status", [&]() -> std::string {
     std::string e;
-    mjModel* m = load(model, e);
+    mjModel* m = child_model(e);
     if (!m) return e;
     mjData* d = mj_makeData(m);
     Writer traj;
@@ -162,7 +176,7 @@ int record(const char* model, const std::string& dir, bool model_only, const std
     if (!have_post && group != "forward") have_post = post.load(out + "forward.bin");
     ok = isolated(out + group + ".status", [&, group = group, check = check]() -> std::string {
       std::string e;
-      mjModel* m = load(model, e);
+      mjModel* m = child_model(e);
       if (!m) return e;
       mjData* d = mj_makeData(m);
       if (!have_states) return "no states.bin";
@@ -298,7 +312,7 @@ bool right_library() {
 
 int usage() {
   std::fprintf(stderr,
-               "usage: harness record|replay MODEL DIR [--model-only] [--groups g1,g2,...] [--disable FLAGS] | "
+               "usage: harness record|replay MODEL DIR [--model-only] [--groups g1,g2,...] [--disable FLAGS] [--states N] | "
                "harness compare DIR [-v] [--groups g1,g2,...]\n");
   return 2;
 }
@@ -330,6 +344,11 @@ int main(int argc, char** argv) {
     if (!std::strcmp(argv[i], "--model-only")) model_only = true;
     else if (!std::strcmp(argv[i], "--groups") && i + 1 < argc) only = argv[++i];
     else if (!std::strcmp(argv[i], "--disable") && i + 1 < argc) g_disable = std::atoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--states") && i + 1 < argc) {
+      int n = std::atoi(argv[++i]);
+      if (n < 1 || n > kSteps) return usage();
+      g_state_every = kSteps / n;
+    }
     else return usage();
   }
   if (mode == "record") return record(argv[2], dir, model_only, only);

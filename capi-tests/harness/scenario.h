@@ -72,16 +72,17 @@ inline void perturb(const mjModel* m, mjData* d) {
 }
 
 // The 1000-step trajectory: records qpos/qvel/act/qacc_warmstart/time, and optionally the states.
-// perturbed: start from the perturbed initial state (the reference's trajectory noise floor).
+// perturbed: start from the perturbed initial state (the reference's trajectory noise floor);
+// a state every state_every steps.
 inline void run_trajectory(const mjModel* m, mjData* d, Writer& traj, Writer* states,
-                           bool perturbed = false) {
+                           bool perturbed = false, int state_every = kStateEvery) {
   reset(m, d);
   if (perturbed) perturb(m, d);
   std::vector<mjtNum> mocap0(d->mocap_pos, d->mocap_pos + 3 * m->nmocap);
   int nstate = 0;
   for (int step = 0; step < kSteps; step++) {
     drive(m, d, mocap0);
-    if (states && step % kStateEvery == 0) dump_state(m, d, *states, I(nstate++));
+    if (states && step % state_every == 0) dump_state(m, d, *states, I(nstate++));
     mj_step(m, d);
     if (step % kTrajEvery == kTrajEvery - 1) {
       std::string k = I(step + 1);

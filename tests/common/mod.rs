@@ -376,16 +376,22 @@ pub fn verdicts(prog: &Path, files: &[String]) -> Vec<String> {
     out
 }
 
-/// Verdicts of both libraries, run side by side.
+/// Verdicts of both libraries: chunks of files of either library on `jobs()` workers, so that
+/// the faster library's runs do not leave a core idle.
 pub fn both_verdicts(
     reference: &Path,
     ours: &Path,
     files: &[String],
 ) -> (Vec<String>, Vec<String>) {
-    std::thread::scope(|s| {
-        let r = s.spawn(|| verdicts(reference, files));
-        (r.join().unwrap(), verdicts(ours, files))
-    })
+    let chunks: Vec<&[String]> = files.chunks(50).collect();
+    let runs: Vec<(&Path, &[String])> = chunks
+        .iter()
+        .map(|&c| (reference, c))
+        .chain(chunks.iter().map(|&c| (ours, c)))
+        .collect();
+    let mut out = par_map(&runs, |_, &(prog, chunk)| verdicts(prog, chunk)).into_iter();
+    let r = out.by_ref().take(chunks.len()).flatten().collect();
+    (r, out.flatten().collect())
 }
 
 /// The loader programs, the corpus and project files, and both libraries' verdicts on them.
