@@ -60,13 +60,13 @@ fn corpus() -> Option<&'static [Model]> {
         // the compiled models first (small runs: they tell the size and whether ours loads
         // the model), then the physics of those both load, the largest first, so that no
         // large model is left running alone at the end
-        let compiled = par_map(&files, |i, f| compile(&bin, f, &dir(i)));
+        let compiled = par_map_harness(&files, |i, f| compile(&bin, f, &dir(i)));
         let mut order: Vec<usize> = (0..files.len())
             .filter(|&i| matches!(compiled[i], (Some((true, _)), nv) if nv <= MAX_NV))
             .collect();
         order.sort_by_key(|&i| std::cmp::Reverse(compiled[i].1));
         let mut runs: Vec<Option<Physics>> = (0..files.len()).map(|_| None).collect();
-        let done = par_map(&order, |_, &i| {
+        let done = par_map_harness(&order, |_, &i| {
             let (f, ds) = (&files[i], dir(i));
             let nv = compiled[i].1;
             let p = physics(&bin, f, &f.to_string_lossy(), &ds, main.contains(f), nv);

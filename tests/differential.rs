@@ -21,7 +21,10 @@ fn results() -> &'static (PathBuf, PathBuf) {
     RESULTS.get_or_init(|| {
         let bin = harness_bin();
         let base = work_dir("diff");
-        par_map(&models(), |_, model| {
+        // the list's end holds its largest models: they start first
+        let mut order = models();
+        order.reverse();
+        par_map_harness(&order, |_, model| {
             let dir = base.join(stem(model));
             let _ = std::fs::remove_dir_all(&dir);
             let d = dir.to_string_lossy().to_string();
@@ -143,14 +146,17 @@ fn stepped_trajectories() {
 #[test]
 fn harness_self_check() {
     let bin = harness_bin();
-    let dir = work_dir("diff-self");
-    let _ = std::fs::remove_dir_all(&dir);
-    let d = dir.to_string_lossy().to_string();
-    for model in models().into_iter().step_by(3) {
-        let r = run(&bin.join("harness-ref"), &["record", &model, &d], &[], 300);
+    let base = work_dir("diff-self");
+    let picked: Vec<String> = models().into_iter().step_by(3).collect();
+    par_map(&picked, |_, model| {
+        let dir = base.join(stem(model));
+        let _ = std::fs::remove_dir_all(&dir);
+        let d = dir.to_string_lossy().to_string();
+        let r = run(&bin.join("harness-ref"), &["record", model, &d], &[], 300);
         assert!(r.status.success(), "reference run failed on {model}");
-        run(&bin.join("harness-ref"), &["replay", &model, &d], &[], 300);
+        run(&bin.join("harness-ref"), &["replay", model, &d], &[], 300);
         let c = run(&bin.join("harness-ref"), &["compare", &d], &[], 120);
+        let _ = std::fs::remove_dir_all(&dir);
         let out = text(&c.stdout);
         assert!(
             c.status.success(),
@@ -161,5 +167,5 @@ fn harness_self_check() {
                 line.contains("worst 0.00e+00") || line.trim_start().starts_with("consistency");
             assert!(exact, "reference differs from itself on {model}:\n{line}");
         }
-    }
+    });
 }

@@ -207,10 +207,16 @@ fn run_py(side: Side, gl: Gl, script: &str, args: &[&str], seconds: u32) -> Opti
 /// The same script on both sides: identical output line by line. Returns the reference's output.
 fn same_output(name: &str, gl: Gl, script: &str, args: &[&str], seconds: u32) -> Option<String> {
     let start = std::time::Instant::now();
-    let (Some(ours), Some(reference)) = (
-        run_py(Side::Ours, gl, script, args, seconds),
-        run_py(Side::Ref, gl, script, args, seconds),
-    ) else {
+    // both sides at once (each is one Python process)
+    let (ours, reference) = std::thread::scope(|s| {
+        let reference = s.spawn(|| run_py(Side::Ref, gl, script, args, seconds));
+        let ours = run_py(Side::Ours, gl, script, args, seconds);
+        let reference = reference
+            .join()
+            .unwrap_or_else(|e| std::panic::resume_unwind(e));
+        (ours, reference)
+    });
+    let (Some(ours), Some(reference)) = (ours, reference) else {
         return None;
     };
     let (a, b): (Vec<&str>, Vec<&str>) = (ours.lines().collect(), reference.lines().collect());
