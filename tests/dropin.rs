@@ -211,8 +211,14 @@ fn compile_writes_identical_mjb() {
             .map(|f| f.to_string_lossy().into_owned()),
     );
     let dir = work_dir("mjb");
-    let (mut same, mut unsupported, mut differ) = (0, 0, Vec::new());
-    for (i, f) in files.iter().enumerate() {
+    /// What mujoco-compile gave on both libraries.
+    enum Mjb {
+        Rejected,
+        Same,
+        Unsupported,
+        Differs,
+    }
+    let verdicts = par_map(&files, |i, f| {
         let (r, o) = (
             dir.join(format!("{i}-ref.mjb")),
             dir.join(format!("{i}-ours.mjb")),
@@ -221,7 +227,7 @@ fn compile_writes_identical_mjb() {
         let (rs, os) = (r.to_string_lossy(), o.to_string_lossy());
         run(Path::new(COMPILE), &[f, &rs], &[], 120);
         let Ok(want) = std::fs::read(&r) else {
-            continue; // the reference rejects it
+            return Mjb::Rejected;
         };
         let out = run(
             Path::new(COMPILE),
@@ -230,11 +236,20 @@ fn compile_writes_identical_mjb() {
             120,
         );
         match std::fs::read(&o) {
-            Ok(got) if got == want => same += 1,
-            Err(_) if text(&out.stdout).contains("not supported") => unsupported += 1,
-            _ => differ.push(f.clone()),
+            Ok(got) if got == want => Mjb::Same,
+            Err(_) if text(&out.stdout).contains("not supported") => Mjb::Unsupported,
+            _ => Mjb::Differs,
         }
-    }
+    });
+    let count = |want: fn(&Mjb) -> bool| verdicts.iter().filter(|v| want(v)).count();
+    let same = count(|v| matches!(v, Mjb::Same));
+    let unsupported = count(|v| matches!(v, Mjb::Unsupported));
+    let differ: Vec<&String> = files
+        .iter()
+        .zip(&verdicts)
+        .filter(|(_, v)| matches!(v, Mjb::Differs))
+        .map(|(f, _)| f)
+        .collect();
     let msg = format!(
         "mujoco-compile to MJB: {same} byte-identical, {unsupported} not supported yet, {} differ\n{}",
         differ.len(),

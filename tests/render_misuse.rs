@@ -130,11 +130,18 @@ fn misuse_matches_reference() {
     require_osmesa();
     let mut tally = Tally::default();
     let mut failures = Vec::new();
-    for platform in [true, false] {
-        let (r, o) = (compile(Lib::Ref, platform), compile(Lib::Ours, platform));
-        let reference = run(&r, &[], &[], 600);
-        let ours = run(&o, &[], &[], 600);
-        let (reference, ours) = (text(&reference.stdout), text(&ours.stdout));
+    // the four programs (library, platform) built and run side by side
+    let programs = [
+        (Lib::Ref, true),
+        (Lib::Ours, true),
+        (Lib::Ref, false),
+        (Lib::Ours, false),
+    ];
+    let outputs = par_map(&programs, |_, &(lib, platform)| {
+        text(&run(&compile(lib, platform), &[], &[], 600).stdout)
+    });
+    for (pair, platform) in outputs.chunks(2).zip([true, false]) {
+        let (reference, ours) = (&pair[0], &pair[1]);
         assert!(reference.contains("case "), "no output from 2.2.2");
         let label = if platform {
             ""
@@ -142,7 +149,7 @@ fn misuse_matches_reference() {
             "no platform library: "
         };
         tally.table.push_str(&format!("-- {label}\n"));
-        failures.extend(compare(&reference, &ours, &mut tally));
+        failures.extend(compare(reference, ours, &mut tally));
     }
     let summary = format!(
         "{} cases identical to 2.2.2; {} where 2.2.2 crashes and {} where it is undefined end \
