@@ -24,7 +24,8 @@ extern "C" {
 
 const STEPPERS: usize = 4;
 const LOADERS: usize = 2;
-/// Steps per run: --steps N, else 300.
+/// Steps per run: --steps N, else DEFAULT_STEPS.
+const DEFAULT_STEPS: usize = 300;
 static STEPS: std::sync::OnceLock<usize> = std::sync::OnceLock::new();
 
 unsafe extern "C" fn quiet(_msg: *const c_char) {}
@@ -59,7 +60,7 @@ fn simulate(m: Shared) -> Vec<f64> {
             (*m).na as usize,
             (*m).nu as usize,
         );
-        for s in 0..*STEPS.get().unwrap_or(&300) {
+        for s in 0..*STEPS.get().unwrap_or(&DEFAULT_STEPS) {
             for i in 0..nu {
                 *(*d).ctrl.add(i) = (0.01 * s as f64 * (1.0 + 0.3 * i as f64) + i as f64).sin();
             }
