@@ -4,8 +4,10 @@
 use super::hooks;
 use super::linalg::{clip, is_bad, max, mul_mat_t_vec};
 use super::support::warning;
+use super::transmission::moment_span;
 use super::{disabled, tick, Data, EngineError, Model, MINVAL};
 use crate::abi::*;
+use crate::math::blas::mul_mat_t_vec_span;
 use crate::math::misc::{muscle_bias, muscle_dynamics, muscle_gain};
 use crate::runtime::callbacks::ActCallback;
 
@@ -67,6 +69,12 @@ fn act_rate(m: &Model, i: usize, ctrl: f64, act: f64) -> Option<f64> {
 
 /// actuator_force, qfrc_actuator, act_dot (mj_fwdActuation).
 pub fn fwd_actuation(m: &Model, d: &mut Data) -> Result<(), EngineError> {
+    actuation(m, d, false)
+}
+
+/// mj_fwdActuation; `spans`: the moment rows are as `transmission` left them (zero outside
+/// `moment_span`), so that the force products skip their zeros.
+pub fn actuation(m: &Model, d: &mut Data, spans: bool) -> Result<(), EngineError> {
     let start = super::now();
     let nv = m.raw.nv as usize;
     let nu = m.raw.nu as usize;
@@ -125,7 +133,20 @@ pub fn fwd_actuation(m: &Model, d: &mut Data) -> Result<(), EngineError> {
                 );
             }
         }
-        mul_mat_t_vec(d.qfrc_actuator, d.actuator_moment, d.actuator_force, nu, nv);
+        if spans {
+            let ten_j = (&*d.ten_J_rownnz, &*d.ten_J_rowadr, &*d.ten_J_colind);
+            let span = |i| moment_span(m, ten_j, i);
+            mul_mat_t_vec_span(
+                d.qfrc_actuator,
+                d.actuator_moment,
+                d.actuator_force,
+                nu,
+                nv,
+                span,
+            );
+        } else {
+            mul_mat_t_vec(d.qfrc_actuator, d.actuator_moment, d.actuator_force, nu, nv);
+        }
         for i in nu - na..nu {
             let j = i + na - nu;
             let top = a.used();

@@ -1,6 +1,6 @@
 //! The forward pipeline and mj_step: position, velocity, actuation, acceleration, constraint.
 
-use super::actuation::fwd_actuation;
+use super::actuation::{actuation, fwd_actuation};
 use super::collision::collision;
 use super::constraint::{make_constraint, project_constraint, reference_constraint};
 use super::inertia::{crb, factor_m, solve_ld};
@@ -12,10 +12,11 @@ use super::passive::passive;
 use super::rne::rne_bias;
 use super::sensor::{sensor_acc, sensor_pos, sensor_vel};
 use super::support::{energy_pos, energy_vel, reset_data, warning};
-use super::transmission::transmission;
+use super::transmission::{moment_span, transmission};
 use super::velocity::com_vel;
 use super::{enabled, now, tick, Data, EngineError, Model};
 use crate::abi::*;
+use crate::math::blas::dot_span;
 use mjtTimer_::*;
 
 pub use super::tendon::tendon;
@@ -65,10 +66,23 @@ fn position(m: &Model, d: &mut Data, omit: Omit) -> Result<(), EngineError> {
 
 /// Velocity-dependent stage (mj_fwdVelocity).
 pub fn fwd_velocity(m: &Model, d: &mut Data) -> Result<(), EngineError> {
+    velocity(m, d, false)
+}
+
+/// mj_fwdVelocity; `spans` as in `actuation`.
+fn velocity(m: &Model, d: &mut Data, spans: bool) -> Result<(), EngineError> {
     let start = now();
     let (nu, nv) = (m.raw.nu as usize, m.raw.nv as usize);
     super::tendon::tendon_velocity(m, d);
-    mul_mat_vec(d.actuator_velocity, d.actuator_moment, d.qvel, nu, nv);
+    if spans && d.qvel.iter().all(|v| v.is_finite()) {
+        let ten_j = (&*d.ten_J_rownnz, &*d.ten_J_rowadr, &*d.ten_J_colind);
+        for i in 0..nu {
+            let (lo, hi) = moment_span(m, ten_j, i);
+            d.actuator_velocity[i] = dot_span(&d.actuator_moment[i * nv..], d.qvel, nv, lo, hi);
+        }
+    } else {
+        mul_mat_vec(d.actuator_velocity, d.actuator_moment, d.qvel, nu, nv);
+    }
     com_vel(m, d);
     passive(m, d)?;
     reference_constraint(m, d);
@@ -193,8 +207,6 @@ fn bad_state(m: &Model, d: &mut Data, kind: mjtWarning_, i: usize) -> Result<(),
     Ok(())
 }
 
-type Stage = fn(&Model, &mut Data) -> Result<(), EngineError>;
-
 /// The position and velocity stages not skipped, each followed by its sensors and energy:
 /// shared by forward and inverse dynamics, which differ only in the stage functions.
 pub fn pos_vel_stages(
@@ -202,7 +214,7 @@ pub fn pos_vel_stages(
     d: &mut Data,
     (skipstage, skipsensor, omit): (i32, bool, Omit),
     position: impl FnOnce(&Model, &mut Data) -> Result<(), EngineError>,
-    velocity: Stage,
+    velocity: impl FnOnce(&Model, &mut Data) -> Result<(), EngineError>,
 ) -> Result<(), EngineError> {
     let energy = enabled(m, mjtEnableBit_::mjENBL_ENERGY) && !omit.energy;
     if skipstage < mjtStage_::mjSTAGE_POS as i32 {
@@ -246,9 +258,13 @@ pub fn forward_pass(
 ) -> Result<(), EngineError> {
     let start = now();
     let stages = (skipstage, skipsensor, omit);
-    pos_vel_stages(m, d, stages, |m, d| position(m, d, omit), fwd_velocity)?;
+    // the moment rows are transmission's own when it ran in this pass and no callback, which
+    // could write them, runs before the actuation
+    let spans = skipstage < mjtStage_::mjSTAGE_POS as i32 && !super::hooks::any_set();
+    let velocity = |m: &Model, d: &mut Data| velocity(m, d, spans);
+    pos_vel_stages(m, d, stages, |m, d| position(m, d, omit), velocity)?;
     super::hooks::control(m, d);
-    fwd_actuation(m, d)?;
+    actuation(m, d, spans)?;
     fwd_acceleration(m, d)?;
     fwd_constraint(m, d)?;
     if !skipsensor {

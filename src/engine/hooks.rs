@@ -39,6 +39,11 @@ pub fn sensor(m: &Model, d: &mut Data, top: usize, stage: i32) {
     marked(d.raw, top, |raw| callbacks::call_sensor(m.raw, raw, stage));
 }
 
+/// Is any callback set that receives the data?
+pub fn any_set() -> bool {
+    callbacks::any_engine_callback()
+}
+
 /// Is mjcb_contactfilter set?
 pub fn contact_filter_set() -> bool {
     callbacks::contactfilter_set()

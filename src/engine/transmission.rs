@@ -96,6 +96,35 @@ pub fn transmission(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     })
 }
 
+/// The columns `lo..hi` of actuator `i`'s moment row that `transmission` may set (the rest
+/// it leaves zero): the joint's dofs, the tendon's sparse Jacobian columns, else all.
+/// `ten_j`: the sparse tendon Jacobian's rownnz, rowadr and colind.
+pub fn moment_span(m: &Model, ten_j: (&[i32], &[i32], &[i32]), i: usize) -> (usize, usize) {
+    let nv = m.raw.nv as usize;
+    let id = m.actuator_trnid()[2 * i] as usize;
+    match m.actuator_trntype()[i] {
+        TRN_JOINT | TRN_JOINTINPARENT => {
+            let dadr = m.jnt_dofadr()[id] as usize;
+            let ndof = match m.jnt_type()[id] {
+                JNT_SLIDE | JNT_HINGE => 1,
+                JNT_BALL => 3,
+                _ => 6,
+            };
+            (dadr, dadr + ndof)
+        }
+        TRN_TENDON if is_sparse(m) => {
+            let (rownnz, rowadr, colind) = ten_j;
+            let adr = rowadr[id] as usize;
+            let cols = &colind[adr..adr + rownnz[id] as usize];
+            match (cols.iter().min(), cols.iter().max()) {
+                (Some(&lo), Some(&hi)) => (lo as usize, hi as usize + 1),
+                _ => (0, 0),
+            }
+        }
+        _ => (0, nv),
+    }
+}
+
 /// Slider-crank: length of the slider along its axis, with its derivatives; returns length.
 fn slider_crank(
     m: &Model,

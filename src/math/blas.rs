@@ -88,24 +88,52 @@ pub fn add_scl(res: &mut [f64], a: &[f64], b: &[f64], s: f64) {
 /// Dot product of the first `n` elements, summed in four interleaved partial sums
 /// over blocks of four, then the remainder (MuJoCo's order).
 pub fn dot(a: &[f64], b: &[f64], n: usize) -> f64 {
-    let (a, b) = (&a[..n], &b[..n]);
+    let n4 = n & !3;
+    let s = lane_sum(&a[..n4], &b[..n4]);
+    add_remainder(s, &a[n4..n], &b[n4..n])
+}
+
+/// The four partial sums of blocks of four, combined (p0 + p2) + (p1 + p3); length a multiple
+/// of 4. Never -0: each partial sum starts at +0 and a sum is -0 only of two -0.
+#[inline(always)]
+fn lane_sum(a: &[f64], b: &[f64]) -> f64 {
     let mut p = [0.0f64; 4];
-    let (ca, cb) = (a.chunks_exact(4), b.chunks_exact(4));
-    let (ra, rb) = (ca.remainder(), cb.remainder());
-    for (x, y) in ca.zip(cb) {
+    for (x, y) in a.chunks_exact(4).zip(b.chunks_exact(4)) {
         p[0] += x[0] * y[0];
         p[1] += x[1] * y[1];
         p[2] += x[2] * y[2];
         p[3] += x[3] * y[3];
     }
-    let mut s = (p[0] + p[2]) + (p[1] + p[3]);
+    (p[0] + p[2]) + (p[1] + p[3])
+}
+
+/// `s` plus the products of the last (at most 3) elements, summed first.
+#[inline(always)]
+fn add_remainder(s: f64, ra: &[f64], rb: &[f64]) -> f64 {
     match ra.len() {
-        3 => s += ra[0] * rb[0] + ra[1] * rb[1] + ra[2] * rb[2],
-        2 => s += ra[0] * rb[0] + ra[1] * rb[1],
-        1 => s += ra[0] * rb[0],
-        _ => {}
+        3 => s + (ra[0] * rb[0] + ra[1] * rb[1] + ra[2] * rb[2]),
+        2 => s + (ra[0] * rb[0] + ra[1] * rb[1]),
+        1 => s + ra[0] * rb[0],
+        _ => s,
     }
-    s
+}
+
+/// `dot(a, b, n)` for an `a` that is zero outside `lo..hi` and a finite `b`, over the blocks
+/// that hold `lo..hi` only: the skipped terms are all +-0, and adding +-0 to a partial sum
+/// (never -0) leaves it as it is, so the result is the same to the bit.
+pub fn dot_span(a: &[f64], b: &[f64], n: usize, lo: usize, hi: usize) -> f64 {
+    let n4 = n & !3;
+    let (c0, c1) = ((lo & !3).min(n4), ((hi + 3) & !3).min(n4));
+    let s = if c0 < c1 {
+        lane_sum(&a[c0..c1], &b[c0..c1])
+    } else {
+        0.0
+    };
+    if hi > n4 {
+        add_remainder(s, &a[n4..n], &b[n4..n])
+    } else {
+        s
+    }
 }
 
 pub fn norm(vec: &[f64]) -> f64 {
@@ -144,6 +172,28 @@ pub fn mul_mat_t_vec(res: &mut [f64], mat: &[f64], vec: &[f64], nr: usize, nc: u
         let s = vec[r];
         if s != 0.0 {
             add_to_scl(res, &mat[r * nc..(r + 1) * nc], s);
+        }
+    }
+}
+
+/// `mul_mat_t_vec` for a `mat` whose row r is zero outside `span(r)`: the same result to the
+/// bit (res starts at +0 and never becomes -0, so adding +-0 leaves it); a row whose weight
+/// is not finite is taken whole, as 0 * inf is not 0.
+pub fn mul_mat_t_vec_span(
+    res: &mut [f64],
+    mat: &[f64],
+    vec: &[f64],
+    nr: usize,
+    nc: usize,
+    span: impl Fn(usize) -> (usize, usize),
+) {
+    let res = &mut res[..nc];
+    zero(res);
+    for r in 0..nr {
+        let s = vec[r];
+        if s != 0.0 {
+            let (lo, hi) = if s.is_finite() { span(r) } else { (0, nc) };
+            add_to_scl(&mut res[lo..hi], &mat[r * nc + lo..r * nc + hi], s);
         }
     }
 }

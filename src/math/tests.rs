@@ -616,3 +616,57 @@ fn paired_chol_updates_are_two_updates_in_turn() {
         assert_eq!((bits(&x1), bits(&x2)), (bits(&y1), bits(&y2)));
     }
 }
+
+/// Rows zero outside a span, with exact cancellations and signed zeros inside it.
+fn span_rows(rng: &mut Rng, n: usize) -> Vec<(Vec<f64>, usize, usize)> {
+    let mut rows = Vec::new();
+    for lo in 0..n {
+        for hi in lo..=n {
+            let mut row = vec![0.0; n];
+            for (k, x) in row[lo..hi].iter_mut().enumerate() {
+                *x = match k % 4 {
+                    0 => rng.next(),
+                    1 => -0.0,
+                    2 => 1.0,
+                    _ => -1.0,
+                };
+            }
+            rows.push((row, lo, hi));
+        }
+    }
+    rows
+}
+
+#[test]
+fn dot_span_is_dot_to_the_bit() {
+    let mut rng = Rng(17);
+    for n in 0..14 {
+        let mut b: Vec<f64> = (0..n).map(|_| rng.next()).collect();
+        if n > 2 {
+            b[1] = -0.0;
+            b[2] = 1.0;
+        }
+        for (row, lo, hi) in span_rows(&mut rng, n) {
+            let (x, y) = (dot(&row, &b, n), dot_span(&row, &b, n, lo, hi));
+            assert_eq!(x.to_bits(), y.to_bits(), "n {n} span {lo}..{hi}: {x} {y}");
+        }
+    }
+}
+
+#[test]
+fn mul_mat_t_vec_span_is_mul_mat_t_vec_to_the_bit() {
+    let mut rng = Rng(19);
+    for nc in 1..10 {
+        let rows = span_rows(&mut rng, nc);
+        let nr = rows.len();
+        let mat: Vec<f64> = rows.iter().flat_map(|r| r.0.clone()).collect();
+        let mut vec: Vec<f64> = (0..nr).map(|_| rng.next()).collect();
+        vec[nr / 2] = f64::INFINITY; // taken whole: 0 * inf is NaN in every column
+        vec[nr / 3] = 0.0;
+        let (mut x, mut y) = (vec![1.0; nc], vec![2.0; nc]);
+        mul_mat_t_vec(&mut x, &mat, &vec, nr, nc);
+        mul_mat_t_vec_span(&mut y, &mat, &vec, nr, nc, |r| (rows[r].1, rows[r].2));
+        let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+        assert_eq!(bits(&x), bits(&y), "nc {nc}");
+    }
+}
