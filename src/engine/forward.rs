@@ -248,6 +248,9 @@ pub fn forward_skip(
     forward_pass(m, d, skipstage, skipsensor, Omit::default())
 }
 
+/// Fewest dofs for which the moment products go by spans (below, whole rows cost less).
+const SPAN_MIN_NV: usize = 48;
+
 /// mj_forwardSkip leaving out `omit`.
 pub fn forward_pass(
     m: &Model,
@@ -260,7 +263,9 @@ pub fn forward_pass(
     let stages = (skipstage, skipsensor, omit);
     // the moment rows are transmission's own when it ran in this pass and no callback, which
     // could write them, runs before the actuation
-    let spans = skipstage < mjtStage_::mjSTAGE_POS as i32 && !super::hooks::any_set();
+    let spans = m.raw.nv as usize >= SPAN_MIN_NV
+        && skipstage < mjtStage_::mjSTAGE_POS as i32
+        && !super::hooks::any_set();
     let velocity = |m: &Model, d: &mut Data| velocity(m, d, spans);
     pos_vel_stages(m, d, stages, |m, d| position(m, d, omit), velocity)?;
     super::hooks::control(m, d);

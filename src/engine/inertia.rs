@@ -73,16 +73,8 @@ pub fn factor_i(
             let cnt = (madr[iu + 1] - madr[iu]) as usize;
             let s = -tmp;
             let (head, tail) = qld.split_at_mut(aki);
-            let (dst, src) = (&mut head[ai..ai + cnt], &tail[..cnt]);
-            // short rows (ancestor chains): two at a time, no vector set-up
-            let mut j = 0;
-            while j + 2 <= cnt {
-                dst[j] += src[j] * s;
-                dst[j + 1] += src[j + 1] * s;
-                j += 2;
-            }
-            if j < cnt {
-                dst[j] += src[j] * s;
+            for (x, y) in head[ai..ai + cnt].iter_mut().zip(&tail[..cnt]) {
+                *x += y * s;
             }
             qld[aki] = tmp;
             i = parent[iu];
