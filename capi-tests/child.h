@@ -9,6 +9,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "wait_child.h"
+
 // Runs fn(file) in a child process with its stdout captured and prints that output, or
 // "crash <signal>", "crash exit <code>" (no output), or "hang" after `seconds`.
 static inline void in_child(void (*fn)(const char*), const char* file, int seconds) {
@@ -24,16 +26,8 @@ static inline void in_child(void (*fn)(const char*), const char* file, int secon
     _exit(0);
   }
   close(fd[1]);
-  int ws = 0, done = 0;
-  // short naps first (most children end within milliseconds), then 10 ms ones
-  for (long waited = 0, nap = 500; waited < 1000000L * seconds && !done; waited += nap) {
-    nap = waited < 200000 ? 500 : 10000;
-    if (waitpid(pid, &ws, WNOHANG) == pid) done = 1;
-    else usleep(nap);
-  }
-  if (!done) {
-    kill(pid, SIGKILL);
-    waitpid(pid, &ws, 0);
+  int ws = 0;
+  if (!wait_child(pid, seconds, &ws)) {
     printf("hang\n");
     close(fd[0]);
     return;

@@ -34,6 +34,7 @@
 #include "compare.h"
 #include "dump.h"
 #include "scenario.h"
+#include "../wait_child.h"
 
 namespace {
 
@@ -82,24 +83,17 @@ bool isolated(const std::string& status, const std::function<std::string()>& fn,
     _exit(0);
   }
   int ws = 0;
-  // short naps first (most groups end within milliseconds), then 10 ms ones
-  for (long waited = 0, nap = 500; waited < seconds * 1000000L; waited += nap) {
-    nap = waited < 200000 ? 500 : 10000;
-    if (waitpid(pid, &ws, WNOHANG) == pid) {
-      if (WIFSIGNALED(ws)) {
-        write_status(status, std::string("crashed: signal ") + std::to_string(WTERMSIG(ws)) + " (" +
-                                 strsignal(WTERMSIG(ws)) + ")");
-      } else if (WEXITSTATUS(ws) != 0 && read_status(status).rfind("mju_error", 0) != 0) {
-        write_status(status, "exited with code " + std::to_string(WEXITSTATUS(ws)));
-      }
-      return read_status(status) == "ok";
-    }
-    usleep(nap);
+  if (!wait_child(pid, seconds, &ws)) {
+    write_status(status, "timed out after " + std::to_string(seconds) + " s");
+    return false;
   }
-  kill(pid, SIGKILL);
-  waitpid(pid, &ws, 0);
-  write_status(status, "timed out after " + std::to_string(seconds) + " s");
-  return false;
+  if (WIFSIGNALED(ws)) {
+    write_status(status, std::string("crashed: signal ") + std::to_string(WTERMSIG(ws)) + " (" +
+                             strsignal(WTERMSIG(ws)) + ")");
+  } else if (WEXITSTATUS(ws) != 0 && read_status(status).rfind("mju_error", 0) != 0) {
+    write_status(status, "exited with code " + std::to_string(WEXITSTATUS(ws)));
+  }
+  return read_status(status) == "ok";
 }
 
 mjModel* load(const char* path, std::string& error) {

@@ -166,14 +166,7 @@ pub fn mul_mat_vec(res: &mut [f64], mat: &[f64], vec: &[f64], nr: usize, nc: usi
 
 /// res (nc) = mat^T * vec (nr), rows with zero weight skipped.
 pub fn mul_mat_t_vec(res: &mut [f64], mat: &[f64], vec: &[f64], nr: usize, nc: usize) {
-    let res = &mut res[..nc];
-    zero(res);
-    for r in 0..nr {
-        let s = vec[r];
-        if s != 0.0 {
-            add_to_scl(res, &mat[r * nc..(r + 1) * nc], s);
-        }
-    }
+    mul_mat_t_vec_span(res, mat, vec, nr, nc, |_| (0, nc));
 }
 
 /// `mul_mat_t_vec` for a `mat` whose row r is zero outside `span(r)`: the same result to the
