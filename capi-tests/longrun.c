@@ -1,6 +1,7 @@
 // Long runs, built against each library (tests/long_run.rs):
 //   longrun STEPS FILE...   per file, in a child process: load, then STEPS driven mj_step calls
-//   (a fifth of them for models of more than BIG bodies: composites, crowds of humanoids);
+//   (a fifth of them for models of more than BIG bodies or BIG_NV dofs: composites, crowds of
+//   humanoids, stacks of free bodies, long chains);
 //   one line per file: "ok nan=<first step with a NaN or -1> warnings=<type:count,...>",
 //   "load-error <message>", "error <mju_error message>", "crash <signal>" or "hang"
 #include "child.h"  // first: it sets the feature macros
@@ -27,6 +28,7 @@ static int has_nan(const mjtNum* x, int n) {
 
 static int steps = 0;
 #define BIG 100
+#define BIG_NV 60
 
 static void run(const char* file) {
   char err[1000] = "";
@@ -39,7 +41,7 @@ static void run(const char* file) {
   }
   mjData* d = mj_makeData(m);
   if (m->nkey > 0) mj_resetDataKeyframe(m, d, 0);
-  int nan_at = -1, n = m->nbody > BIG ? steps / 5 : steps;
+  int nan_at = -1, n = m->nbody > BIG || m->nv > BIG_NV ? steps / 5 : steps;
   for (int s = 0; s < n; s++) {
     drive_controls(m, d, s);
     mj_step(m, d);

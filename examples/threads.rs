@@ -2,8 +2,9 @@
 //! stepping its own simulation while others load models and use thread-local error hooks. Every
 //! thread's final state is bit-identical to a run on the main thread.
 //!
-//! `cargo run --release --example threads -- [--steps N] [MODEL.xml ...]` prints "<file> same"
-//! per model (N steps per run, 300 by default).
+//! `cargo run --release --example threads -- [--steps N] [--loads L] [MODEL.xml ...]` prints
+//! "<file> same" per model (N steps per run, 300 by default; L loads per loading thread, 3 by
+//! default).
 //! The test suite also runs it under ThreadSanitizer (tests/threads.rs).
 
 use mujoco::abi::{mjData, mjModel, mjVFS};
@@ -27,6 +28,9 @@ const LOADERS: usize = 2;
 /// Steps per run: --steps N, else DEFAULT_STEPS.
 const DEFAULT_STEPS: usize = 300;
 static STEPS: std::sync::OnceLock<usize> = std::sync::OnceLock::new();
+/// Loads per loading thread and model: --loads L, else DEFAULT_LOADS.
+const DEFAULT_LOADS: usize = 3;
+static LOADS: std::sync::OnceLock<usize> = std::sync::OnceLock::new();
 
 unsafe extern "C" fn quiet(_msg: *const c_char) {}
 
@@ -89,7 +93,7 @@ extern "C" fn job(arg: *mut libc::c_void) -> *mut libc::c_void {
         Some(file) => {
             // SAFETY: this thread's own hook, cleared before it ends.
             unsafe { _mjPRIVATE__set_tls_warning_fn(Some(quiet)) };
-            for _ in 0..3 {
+            for _ in 0..*LOADS.get().unwrap_or(&DEFAULT_LOADS) {
                 if let Some(m) = load(file.to_str().unwrap()) {
                     // SAFETY: a model of this thread's own.
                     unsafe {
@@ -143,9 +147,14 @@ fn main() {
     // SAFETY: set before any other thread runs.
     unsafe { mju_user_warning = Some(quiet) };
     let mut files: Vec<String> = std::env::args().skip(1).collect();
-    if files.first().map(String::as_str) == Some("--steps") && files.len() > 1 {
-        let n = files[1].parse().expect("--steps N: a number of steps");
-        STEPS.set(n).unwrap();
+    while files.len() > 1 && matches!(files[0].as_str(), "--steps" | "--loads") {
+        let n = files[1].parse().expect("--steps N, --loads L: a number");
+        let cell = if files[0] == "--steps" {
+            &STEPS
+        } else {
+            &LOADS
+        };
+        cell.set(n).expect("--steps and --loads once each");
         files.drain(..2);
     }
     let files = if files.is_empty() {
