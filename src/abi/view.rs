@@ -390,6 +390,17 @@ impl<'a> Arena<'a> {
         Ok(unsafe { std::slice::from_raw_parts_mut(words.as_mut_ptr() as *mut u64, n) })
     }
 
+    /// Counts `n` mjtNums as taken and given back at once: the high-water mark and the
+    /// overflow error of 2.2.2's allocation where a shortcut needs no scratch.
+    #[inline]
+    pub fn account(&mut self, n: usize) -> Result<(), EngineError> {
+        if n > self.free.len() {
+            return Err(stack_overflow());
+        }
+        self.peak = self.peak.max(self.used + n);
+        Ok(())
+    }
+
     /// Runs `f` with a nested arena; everything it allocates is released afterwards.
     #[inline]
     pub fn scope<R>(&mut self, f: impl FnOnce(&mut Arena<'_>) -> R) -> R {
@@ -490,5 +501,34 @@ impl<'a> Scene<'a> {
             skinvertadr,
             skinvertnum,
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Arena;
+
+    #[test]
+    fn account_counts_like_an_allocation_given_back() {
+        let mut buf = [0.0; 10];
+        let mut a = Arena::over(&mut buf);
+        a.alloc_stale(2).unwrap();
+        a.account(5).unwrap();
+        assert_eq!(
+            (a.used(), a.peak),
+            (2, 7),
+            "used unchanged, peak as if allocated"
+        );
+        a.account(8).unwrap();
+        assert_eq!(a.peak, 10);
+        assert_eq!(a.account(9).unwrap_err().0, "Stack overflow");
+        assert_eq!(a.peak, 10, "a failed account leaves the mark");
+        let mut b = [0.0; 4];
+        let mut c = Arena::over(&mut b);
+        assert_eq!(
+            c.account(5),
+            c.alloc_stale(5).map(|_| ()),
+            "same error as the allocation"
+        );
     }
 }

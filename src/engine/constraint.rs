@@ -953,6 +953,9 @@ fn project_sparse(
 /// efc_vel and efc_aref (mj_referenceConstraint).
 pub fn reference_constraint(m: &Model, d: &mut Data) {
     let nefc = d.raw.nefc as usize;
+    if nefc == 0 {
+        return;
+    }
     jac_view!(m, d).mul_vec(d.efc_vel, d.qvel);
     for i in 0..nefc {
         let k = &d.efc_KBIP[4 * i..4 * i + 4];

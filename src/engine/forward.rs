@@ -131,7 +131,18 @@ pub fn apply_ft(
 }
 
 /// qfrc += forces of xfrc_applied (mj_xfrcAccumulate).
+#[inline]
 pub fn xfrc_accumulate(m: &Model, d: &mut Data, qfrc: &mut [f64]) -> Result<(), EngineError> {
+    let nbody = m.raw.nbody as usize;
+    // one pass without early exit over all bodies first (vectorized): mostly none has a force
+    if nbody < 2 || !any_nonzero(&d.xfrc_applied[6..6 * nbody]) {
+        return Ok(());
+    }
+    xfrc_apply(m, d, qfrc)
+}
+
+#[inline(never)]
+fn xfrc_apply(m: &Model, d: &mut Data, qfrc: &mut [f64]) -> Result<(), EngineError> {
     for i in 1..m.raw.nbody as usize {
         let x = row::<6>(d.xfrc_applied, i);
         if x.iter().any(|&v| v != 0.0) {
@@ -148,6 +159,11 @@ pub fn xfrc_accumulate(m: &Model, d: &mut Data, qfrc: &mut [f64]) -> Result<(), 
         }
     }
     Ok(())
+}
+
+/// Is some value not +-0 (NaN counts)?
+fn any_nonzero(x: &[f64]) -> bool {
+    x.iter().fold(false, |any, &v| any | (v != 0.0))
 }
 
 /// qfrc_smooth and qacc_smooth (mj_fwdAcceleration).

@@ -12,11 +12,12 @@ pub fn passive(m: &Model, d: &mut Data) -> Result<(), EngineError> {
         return Ok(());
     }
     let f = &mut *d.qfrc_passive;
-    for j in 0..m.raw.njnt as usize {
-        let k = m.jnt_stiffness()[j];
-        let mut padr = m.jnt_qposadr()[j] as usize;
-        let mut dadr = m.jnt_dofadr()[j] as usize;
-        match m.jnt_type()[j] {
+    let (stiffness, qposadr, dofadr) = (m.jnt_stiffness(), m.jnt_qposadr(), m.jnt_dofadr());
+    for (j, &t) in m.jnt_type().iter().enumerate() {
+        let k = stiffness[j];
+        let mut padr = qposadr[j] as usize;
+        let mut dadr = dofadr[j] as usize;
+        match t {
             t @ (JNT_FREE | JNT_BALL) => {
                 if t == JNT_FREE {
                     for i in 0..3 {
@@ -36,8 +37,8 @@ pub fn passive(m: &Model, d: &mut Data) -> Result<(), EngineError> {
             _ => {}
         }
     }
-    for i in 0..m.raw.nv as usize {
-        f[i] -= m.dof_damping()[i] * d.qvel[i];
+    for ((x, b), v) in f.iter_mut().zip(m.dof_damping()).zip(&*d.qvel) {
+        *x -= b * v;
     }
     let sparse = super::jacdif::is_sparse(m);
     let nv = m.raw.nv as usize;

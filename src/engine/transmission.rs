@@ -57,6 +57,24 @@ pub fn transmission(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     if nu == 0 {
         return Ok(());
     }
+    let trntype = &m.actuator_trntype()[..nu];
+    if trntype
+        .iter()
+        .all(|&t| matches!(t, TRN_JOINT | TRN_JOINTINPARENT | TRN_TENDON))
+    {
+        // no scratch needed: the common case of motors on joints and tendons (the stack
+        // still counts the three Jacobians 2.2.2 takes)
+        d.arena.account(9 * nv)?;
+        d.actuator_moment.fill(0.0);
+        for (i, &t) in trntype.iter().enumerate() {
+            if t == TRN_TENDON {
+                tendon(m, d, i);
+            } else {
+                joint(m, d, i);
+            }
+        }
+        return Ok(());
+    }
     super::constraint::with_arena(d, |d, a| -> Result<(), EngineError> {
         let mut s = Scratch {
             // written whole before they are read (not cleared, as in 2.2.2)
