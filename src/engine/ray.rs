@@ -104,11 +104,23 @@ fn meets_sphere(pos: &Vec3, radius: f64, pnt: &Vec3, vec: &Vec3) -> bool {
 
 /// `meets_sphere` for a ray whose `a` (its direction's squared length) lies in [1e-300, 1e280],
 /// without branching on the outcome: there a root's numerator below -1e-40 divides to a
-/// negative root, so the numerator's sign decides but in that sliver near zero.
+/// negative root, so the numerator's sign decides but in that sliver near zero. The numerator
+/// -b + sqrt(det) is >= 0 exactly when the rounded root is >= b, so the root is taken only
+/// where det lies within 1e-12 of b^2 (b in [1e-20, 1e150]): elsewhere det >= MINVAL with
+/// b <= 0 or det above b^2 meets, det below b^2 (by at least 1e-12, so that the numerator is
+/// under -1e-40) misses.
 #[inline(always)]
 fn meets_sphere_sure(pos: &Vec3, radius: f64, pnt: &Vec3, vec: &Vec3) -> bool {
     let (a, b, c) = sphere_terms(pos, radius, pnt, vec);
     let det = b * b - a * c;
+    let det_ok = det >= MINVAL;
+    let scaled = (1e-20..=1e150).contains(&b);
+    let p = b * b;
+    let above = scaled & (det > p * (1.0 + 1e-12));
+    let below = scaled & (det < p * (1.0 - 1e-12));
+    if !det_ok | (b <= 0.0) | above | below {
+        return det_ok & !below;
+    }
     let num = -b + det.sqrt();
     if (num > -1e-40) & (num < 0.0) {
         return det >= MINVAL && num / a >= 0.0;
@@ -402,4 +414,68 @@ pub fn ray(
         }
     }
     Ok((dist, id))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The bounding-sphere test with its root always taken (before the shortcut).
+    fn meets_sphere_rooted(pos: &Vec3, radius: f64, pnt: &Vec3, vec: &Vec3) -> bool {
+        let (a, b, c) = sphere_terms(pos, radius, pnt, vec);
+        let det = b * b - a * c;
+        let num = -b + det.sqrt();
+        if (num > -1e-40) & (num < 0.0) {
+            return det >= MINVAL && num / a >= 0.0;
+        }
+        (det >= MINVAL) & (num >= 0.0)
+    }
+
+    #[test]
+    fn sphere_shortcut_decides_as_the_root() {
+        let mut state = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state
+        };
+        let mut unit = || (next() >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0;
+        let (mut hits, mut misses, mut origin_on_surface) = (0, 0, 0);
+        for i in 0..400_000 {
+            let scale = 10f64.powi((i % 61) - 30);
+            let pos = [unit() * scale, unit() * scale, unit() * scale];
+            let pnt = [unit() * scale, unit() * scale, unit() * scale];
+            let mut vec = [unit(), unit(), unit()];
+            if i % 7 == 0 {
+                vec = [unit() * 1e-100, unit() * 1e-100, unit() * 1e-100];
+            }
+            let dist =
+                ((pnt[0] - pos[0]).powi(2) + (pnt[1] - pos[1]).powi(2) + (pnt[2] - pos[2]).powi(2))
+                    .sqrt();
+            // every third: the ray starts on (within a few ulps of) the sphere
+            let radius = if i % 3 == 0 {
+                origin_on_surface += 1;
+                dist * (1.0 + ((i / 3) % 9) as f64 * f64::EPSILON - 4.0 * f64::EPSILON)
+            } else {
+                unit().abs() * scale * 2.0
+            };
+            let a = vec[0] * vec[0] + vec[1] * vec[1] + vec[2] * vec[2];
+            if !(1e-300..1e280).contains(&a) {
+                continue;
+            }
+            let want = meets_sphere_rooted(&pos, radius, &pnt, &vec);
+            assert_eq!(
+                meets_sphere_sure(&pos, radius, &pnt, &vec),
+                want,
+                "pos {pos:?} radius {radius:e} pnt {pnt:?} vec {vec:?}"
+            );
+            if want {
+                hits += 1;
+            } else {
+                misses += 1;
+            }
+        }
+        assert!(hits > 50_000 && misses > 50_000 && origin_on_surface > 100_000);
+    }
 }
