@@ -320,7 +320,18 @@ struct Visibility<'a> {
     group: &'a [i32],
 }
 
-impl Visibility<'_> {
+impl<'a> Visibility<'a> {
+    fn of(m: &'a Model) -> Self {
+        Visibility {
+            body: m.geom_bodyid(),
+            matid: m.geom_matid(),
+            rgba: m.geom_rgba(),
+            mat_rgba: m.mat_rgba(),
+            ty: m.geom_type(),
+            group: m.geom_group(),
+        }
+    }
+
     /// Is geom `g` left out: the excluded body, invisible (alpha 0, own or material), static
     /// when static geoms are off, or a hidden group (planes and height fields ignore groups)?
     fn eliminated(&self, g: usize, groups: Option<&[u8]>, with_static: bool, exclude: i32) -> bool {
@@ -360,60 +371,159 @@ pub fn ray(
     with_static: bool,
     exclude: i32,
 ) -> Result<(f64, i32), EngineError> {
-    if norm3(vec) < MINVAL {
-        return Err(EngineError("mj_ray: vector length is too small".into()));
-    }
-    let (mut dist, mut id) = (-1.0, -1);
-    let vis = Visibility {
-        body: m.geom_bodyid(),
-        matid: m.geom_matid(),
-        rgba: m.geom_rgba(),
-        mat_rgba: m.mat_rgba(),
-        ty: m.geom_type(),
-        group: m.geom_group(),
-    };
+    check_vec(vec)?;
+    let vis = Visibility::of(m);
     let size = m.geom_size();
     let ngeom = m.raw.ngeom as usize;
+    let sure = sure(vec);
+    let mut best = (-1.0, -1);
     // geoms in blocks: first the bounding-sphere tests of the whole block, without branching
     // on their outcome, then the geoms left, in order (the first nearest one is kept)
-    const BLOCK: usize = 64;
     let mut left = [0u32; BLOCK];
-    let a = vec[0] * vec[0] + vec[1] * vec[1] + vec[2] * vec[2];
-    let sure = (1e-300..1e280).contains(&a);
     for start in (0..ngeom).step_by(BLOCK) {
         let mut n = 0;
         for g in start..ngeom.min(start + BLOCK) {
             if vis.eliminated(g, groups, with_static, exclude) {
                 continue;
             }
-            let pos = row(d.geom_xpos, g);
-            let meets = match bounding_radius(vis.ty[g], &size[3 * g..3 * g + 3]) {
-                None => true,
-                Some(r) if sure => meets_sphere_sure(&pos, r, pnt, vec),
-                Some(r) => meets_sphere(&pos, r, pnt, vec),
+            let r = bounding_radius(vis.ty[g], &size[3 * g..3 * g + 3]);
+            left[n] = g as u32;
+            n += meets(d, g, r, sure, pnt, vec) as usize;
+        }
+        nearest(m, d, &left[..n], pnt, vec, &mut best)?;
+    }
+    Ok(best)
+}
+
+/// Geoms per block of bounding-sphere tests.
+const BLOCK: usize = 64;
+
+/// Most geoms `Targets` holds (on the call stack).
+pub const TARGETS_MAX: usize = 256;
+
+/// The geoms rays of one visibility filter can see (each ray's excluded body aside), in
+/// order, with their bounding radii: prepared once for many casts (rangefinders).
+pub struct Targets {
+    n: usize,
+    /// geom id, or !id for a type without a bounding sphere
+    geom: [i32; TARGETS_MAX],
+    radius: [f64; TARGETS_MAX],
+}
+
+impl Targets {
+    /// None when the model has more than TARGETS_MAX geoms (then `ray` casts each).
+    pub fn new(m: &Model, groups: Option<&[u8]>, with_static: bool) -> Option<Targets> {
+        let ngeom = m.raw.ngeom as usize;
+        if ngeom > TARGETS_MAX {
+            return None;
+        }
+        let vis = Visibility::of(m);
+        let size = m.geom_size();
+        let mut t = Targets {
+            n: 0,
+            geom: [0; TARGETS_MAX],
+            radius: [0.0; TARGETS_MAX],
+        };
+        for g in 0..ngeom {
+            if vis.eliminated(g, groups, with_static, -1) {
+                continue;
+            }
+            (t.geom[t.n], t.radius[t.n]) = match bounding_radius(vis.ty[g], &size[3 * g..3 * g + 3])
+            {
+                Some(r) => (g as i32, r),
+                None => (!(g as i32), 0.0),
+            };
+            t.n += 1;
+        }
+        Some(t)
+    }
+}
+
+/// `ray` over prepared targets: the same result as `ray` with the targets' filter.
+pub fn ray_among(
+    m: &Model,
+    d: &Data,
+    t: &Targets,
+    pnt: &Vec3,
+    vec: &Vec3,
+    exclude: i32,
+) -> Result<(f64, i32), EngineError> {
+    check_vec(vec)?;
+    let body = m.geom_bodyid();
+    let sure = sure(vec);
+    let mut best = (-1.0, -1);
+    let mut left = [0u32; BLOCK];
+    for (geom, radius) in t.geom[..t.n]
+        .chunks(BLOCK)
+        .zip(t.radius[..t.n].chunks(BLOCK))
+    {
+        let mut n = 0;
+        for (&code, &r) in geom.iter().zip(radius) {
+            let (g, r) = if code >= 0 {
+                (code as usize, Some(r))
+            } else {
+                (!code as usize, None)
             };
             left[n] = g as u32;
-            n += meets as usize;
+            n += (meets(d, g, r, sure, pnt, vec) & (body[g] != exclude)) as usize;
         }
-        for &g in &left[..n] {
-            let g = g as usize;
-            let ty = vis.ty[g];
-            let x = if ty == MESH {
-                super::ray_mesh::ray_mesh(m, d, g, pnt, vec)?
-            } else if ty == HFIELD {
-                super::ray_mesh::ray_hfield(m, d, g, pnt, vec)?
-            } else {
-                let (pos, mat) = (row(d.geom_xpos, g), row(d.geom_xmat, g));
-                primitive_inside(&pos, &mat, &size[3 * g..3 * g + 3], pnt, vec, ty)
-                    .ok_or_else(|| EngineError(format!("mj_ray: unexpected geom type {ty}")))?
-            };
-            if x >= 0.0 && (x < dist || dist < 0.0) {
-                dist = x;
-                id = g as i32;
-            }
+        nearest(m, d, &left[..n], pnt, vec, &mut best)?;
+    }
+    Ok(best)
+}
+
+/// mj_ray's check of the direction.
+fn check_vec(vec: &Vec3) -> Result<(), EngineError> {
+    if norm3(vec) < MINVAL {
+        return Err(EngineError("mj_ray: vector length is too small".into()));
+    }
+    Ok(())
+}
+
+/// Does the direction's squared length allow `meets_sphere_sure`?
+fn sure(vec: &Vec3) -> bool {
+    let a = vec[0] * vec[0] + vec[1] * vec[1] + vec[2] * vec[2];
+    (1e-300..1e280).contains(&a)
+}
+
+/// Does the ray meet geom `g`'s bounding sphere of radius `r` (None: no sphere test)?
+#[inline(always)]
+fn meets(d: &Data, g: usize, r: Option<f64>, sure: bool, pnt: &Vec3, vec: &Vec3) -> bool {
+    let pos = row(d.geom_xpos, g);
+    match r {
+        None => true,
+        Some(r) if sure => meets_sphere_sure(&pos, r, pnt, vec),
+        Some(r) => meets_sphere(&pos, r, pnt, vec),
+    }
+}
+
+/// The exact tests of the geoms `left` (in order) into `best`: the first nearest is kept.
+fn nearest(
+    m: &Model,
+    d: &Data,
+    left: &[u32],
+    pnt: &Vec3,
+    vec: &Vec3,
+    best: &mut (f64, i32),
+) -> Result<(), EngineError> {
+    let (ty, size) = (m.geom_type(), m.geom_size());
+    for &g in left {
+        let g = g as usize;
+        let ty = ty[g];
+        let x = if ty == MESH {
+            super::ray_mesh::ray_mesh(m, d, g, pnt, vec)?
+        } else if ty == HFIELD {
+            super::ray_mesh::ray_hfield(m, d, g, pnt, vec)?
+        } else {
+            let (pos, mat) = (row(d.geom_xpos, g), row(d.geom_xmat, g));
+            primitive_inside(&pos, &mat, &size[3 * g..3 * g + 3], pnt, vec, ty)
+                .ok_or_else(|| EngineError(format!("mj_ray: unexpected geom type {ty}")))?
+        };
+        if x >= 0.0 && (x < best.0 || best.0 < 0.0) {
+            *best = (x, g as i32);
         }
     }
-    Ok((dist, id))
+    Ok(())
 }
 
 #[cfg(test)]

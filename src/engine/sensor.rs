@@ -3,7 +3,7 @@
 //! only when a sensor of the stage needs them.
 
 use super::linalg::{clip, min, mul_mat_t_vec, row};
-use super::ray::{ray, ray_geom};
+use super::ray::{ray, ray_among, ray_geom, Targets};
 use super::rne::rne_post_constraint;
 use super::support::{contact_force, object_acceleration, object_frame, object_velocity};
 use super::velocity::subtree_vel;
@@ -90,6 +90,8 @@ pub fn sensor_pos(m: &Model, d: &mut Data) -> Result<(), EngineError> {
         return Ok(());
     }
     let mut after = StageEnd::default();
+    // the geoms rangefinders see, taken at the first one (None: too many geoms, or none yet)
+    let mut targets: Option<Option<Targets>> = None;
     for i in 0..m.raw.nsensor as usize {
         if m.sensor_needstage()[i] != POS {
             continue;
@@ -107,15 +109,11 @@ pub fn sensor_pos(m: &Model, d: &mut Data) -> Result<(), EngineError> {
             // distance along the site's z axis to the nearest geom, its own body excluded
             let mat = row::<9>(d.site_xmat, id);
             let dir = [mat[2], mat[5], mat[8]];
-            let (dist, _) = ray(
-                m,
-                d,
-                &row(d.site_xpos, id),
-                &dir,
-                None,
-                true,
-                m.site_bodyid()[id],
-            )?;
+            let (pnt, body) = (row(d.site_xpos, id), m.site_bodyid()[id]);
+            let (dist, _) = match targets.get_or_insert_with(|| Targets::new(m, None, true)) {
+                Some(t) => ray_among(m, d, t, &pnt, &dir, body)?,
+                None => ray(m, d, &pnt, &dir, None, true, body)?,
+            };
             d.sensordata[adr] = dist;
         } else if is(ty, mjSENS_JOINTPOS) {
             d.sensordata[adr] = d.qpos[m.jnt_qposadr()[id] as usize];
