@@ -59,9 +59,9 @@ fn fnv(b: &[u8]) -> u64 {
     })
 }
 
-/// Runs `program` on the arm under a fresh X server, plays `script` (name, xdotool arguments
-/// with WIN for the window), and returns a hash of the window after each step.
-fn play(program: &str, lib: Lib, script: &[(&str, Vec<&str>)]) -> Vec<(String, u64)> {
+/// `program` on the arm under a fresh X server, once its window shows: the server, the
+/// program and the window id; else the program's exit status and output (it stopped first).
+fn launch(program: &str, lib: Lib) -> Result<(Xvfb, std::process::Child, String), String> {
     let x = Xvfb::start();
     let libdir = lib_dir();
     let mut cmd = Command::new(program);
@@ -70,33 +70,48 @@ fn play(program: &str, lib: Lib, script: &[(&str, Vec<&str>)]) -> Vec<(String, u
         .env_remove("LD_LIBRARY_PATH")
         .current_dir(work_dir("simulate"))
         .stdin(Stdio::null())
-        .stdout(Stdio::null())
+        .stdout(Stdio::piped())
         .stderr(Stdio::piped());
     if lib == Lib::Ours {
         cmd.env("LD_LIBRARY_PATH", &libdir);
     }
     let mut child = cmd.spawn().unwrap();
-    let mut window = String::new();
     for _ in 0..300 {
-        window = xdotool(&x.display, &["search", "--onlyvisible", "--name", "."])
+        let window = xdotool(&x.display, &["search", "--onlyvisible", "--name", "."])
             .lines()
             .next()
             .unwrap_or("")
             .to_string();
-        if !window.is_empty() || child.try_wait().unwrap().is_some() {
+        if !window.is_empty() {
+            return Ok((x, child, window));
+        }
+        if child.try_wait().unwrap().is_some() {
             break;
         }
         std::thread::sleep(Duration::from_millis(100));
     }
-    if window.is_empty() {
-        let _ = child.kill();
-        let o = child.wait_with_output().unwrap();
-        panic!(
-            "{program} on {lib:?}: no window in 30 s ({}): {}",
-            o.status,
-            text(&o.stderr)
-        );
-    }
+    let _ = child.kill();
+    let o = child.wait_with_output().unwrap();
+    Err(format!(
+        "no window in 30 s ({}): {}{}",
+        o.status,
+        text(&o.stdout),
+        text(&o.stderr)
+    ))
+}
+
+/// Runs `program` on the arm under a fresh X server, plays `script` (name, xdotool arguments
+/// with WIN for the window), and returns a hash of the window after each step. A program that
+/// stops before its window shows gets a second start on a new server (GLFW has once failed to
+/// open a just-started Xvfb, on either library); a second failure fails the test.
+fn play(program: &str, lib: Lib, script: &[(&str, Vec<&str>)]) -> Vec<(String, u64)> {
+    let (x, mut child, window) = match launch(program, lib) {
+        Ok(started) => started,
+        Err(first) => {
+            eprintln!("{program} on {lib:?}: {first}; starting it again");
+            launch(program, lib).unwrap_or_else(|e| panic!("{program} on {lib:?}: {e}"))
+        }
+    };
     std::thread::sleep(Duration::from_secs(3));
     let mut out = Vec::new();
     for (name, args) in script {
