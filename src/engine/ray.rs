@@ -121,11 +121,12 @@ fn meets_sphere_sure(pos: &Vec3, radius: f64, pnt: &Vec3, vec: &Vec3) -> bool {
     if !det_ok | (b <= 0.0) | above | below {
         return det_ok & !below;
     }
+    // det >= MINVAL from here
     let num = -b + det.sqrt();
     if (num > -1e-40) & (num < 0.0) {
-        return det >= MINVAL && num / a >= 0.0;
+        return num / a >= 0.0;
     }
-    (det >= MINVAL) & (num >= 0.0)
+    num >= 0.0
 }
 
 /// Capsule, once the ray meets its bounding sphere.
