@@ -12,12 +12,35 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::sync::OnceLock;
 
-/// Packages installed beside the bindings (the releases that go with MuJoCo 2.2.2).
+/// Packages installed beside the bindings (the releases that go with MuJoCo 2.2.2), with the
+/// bindings' own requirements.
 const PACKAGES: &[&str] = &[
     "numpy<2",
-    "dm_control==1.0.7",
     "gymnasium==0.29.1",
     "imageio",
+    "absl-py",
+    "glfw",
+    "pyopengl",
+];
+
+/// dm_control 1.0.7 and what it requires but mujoco (its METADATA), installed without
+/// dependencies: pip would otherwise look for mujoco on PyPI while ours is being built.
+const DM_CONTROL: &str = "dm_control==1.0.7";
+const DM_CONTROL_DEPS: &[&str] = &[
+    "absl-py>=0.7.0",
+    "dm-env",
+    "dm-tree!=0.1.2",
+    "glfw",
+    "labmaze",
+    "lxml",
+    "numpy>=1.9.0",
+    "protobuf>=3.19.4",
+    "pyopengl>=3.1.4",
+    "pyparsing<3.0.0",
+    "requests",
+    "setuptools!=50.0.0",
+    "scipy",
+    "tqdm",
 ];
 
 #[derive(Clone, Copy, PartialEq)]
@@ -47,7 +70,7 @@ fn stamp() -> String {
     for f in files {
         std::fs::read(&f).unwrap().hash(&mut h);
     }
-    PACKAGES.hash(&mut h);
+    (PACKAGES, DM_CONTROL, DM_CONTROL_DEPS).hash(&mut h);
     format!("{:016x}\n", h.finish())
 }
 
@@ -60,7 +83,8 @@ fn sh(cmd: &mut Command, what: &str) -> Result<(), String> {
     if out.status.success() {
         Ok(())
     } else {
-        let err = text(&out.stderr);
+        // pip check reports on stdout
+        let err = text(&out.stdout) + &text(&out.stderr);
         let tail: Vec<&str> = err.lines().rev().take(25).collect();
         Err(format!(
             "{what} failed:\n{}",
@@ -69,11 +93,13 @@ fn sh(cmd: &mut Command, what: &str) -> Result<(), String> {
     }
 }
 
-/// The venv of one side. Ours: `pip install ./python` (the bindings built against our headers
-/// and library) with the packages; the reference's: a copy of ours with Debian's library in
-/// place of ours, so that both sides run the same compiled bindings and differ only in the
-/// library (the drop-in case). Rebuilt when the headers or the build backend change; ours gets
-/// the current libmujoco.so copied in at every run.
+/// The venv of one side. Ours: the bindings built against our headers and library
+/// (`pip install ./python`, as a wheel built while the packages install: pip's install of a
+/// directory is a wheel build and the wheel's install) with the packages; the reference's: a
+/// copy of ours with Debian's library in place of ours, so that both sides run the same
+/// compiled bindings and differ only in the library (the drop-in case). Rebuilt when the
+/// headers or the build backend change; ours gets the current libmujoco.so copied in at every
+/// run.
 fn build_venv(side: Side) -> Result<PathBuf, String> {
     let dir = target_dir().join("python");
     let venv = dir.join(format!("venv-{}", side.name()));
@@ -98,12 +124,48 @@ fn build_venv(side: Side) -> Result<PathBuf, String> {
                 Command::new("python3").args(["-m", "venv"]).arg(&venv),
                 "python3 -m venv",
             )?;
-            let mut pip = Command::new(&py);
-            pip.args(["-m", "pip", "install", "-q"])
-                .arg(root().join("python"))
-                .args(PACKAGES)
-                .current_dir(root());
-            sh(&mut pip, "pip install ./python")?;
+            let pip = |args: &[&str]| {
+                let mut c = Command::new(&py);
+                c.args(["-m", "pip"]).args(args).current_dir(root());
+                c
+            };
+            let wheels = dir.join("wheel");
+            let _ = std::fs::remove_dir_all(&wheels);
+            let (built, packages) = std::thread::scope(|s| {
+                let built = s.spawn(|| {
+                    let mut c = pip(&["wheel", "-q", "--no-deps", "-w"]);
+                    sh(
+                        c.arg(&wheels).arg(root().join("python")),
+                        "pip wheel ./python",
+                    )
+                });
+                let mut all = PACKAGES.to_vec();
+                all.extend(DM_CONTROL_DEPS);
+                let packages = sh(
+                    &mut pip(&[&["install", "-q"], &all[..]].concat()),
+                    "pip install",
+                )
+                .and_then(|()| {
+                    sh(
+                        &mut pip(&["install", "-q", "--no-deps", DM_CONTROL]),
+                        "pip install dm_control",
+                    )
+                });
+                (built.join().unwrap(), packages)
+            });
+            built?;
+            packages?;
+            let wheel = std::fs::read_dir(&wheels)
+                .map_err(|e| format!("{}: {e}", wheels.display()))?
+                .map(|e| e.unwrap().path())
+                .find(|p| p.extension().is_some_and(|x| x == "whl"))
+                .ok_or("pip wheel ./python made no wheel")?;
+            sh(
+                pip(&["install", "-q", "--no-deps"]).arg(&wheel),
+                "pip install (the bindings' wheel)",
+            )?;
+            // every requirement of every package installed, mujoco 2.2.2 (ours) included
+            sh(&mut pip(&["check"]), "pip check")?;
         }
         std::fs::write(&stamp_file, want).unwrap();
     }

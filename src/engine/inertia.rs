@@ -54,7 +54,8 @@ pub fn factor_i(
 ) -> Result<(), EngineError> {
     let nv = m.raw.nv as usize;
     let (madr, simple, parent) = (m.dof_Madr(), m.dof_simplenum(), m.dof_parentid());
-    qld.copy_from_slice(&mat[..qld.len()]);
+    let nm = qld.len();
+    qld.copy_from_slice(&mat[..nm]);
     for k in (0..nv).rev() {
         let akk = madr[k] as usize;
         if qld[akk] < MINVAL {
@@ -64,21 +65,22 @@ pub fn factor_i(
         if simple[k] != 0 {
             continue;
         }
-        let mut aki = akk + 1;
+        // row k: its diagonal, then one entry per ancestor; each ancestor's own row is the
+        // rest of row k from that ancestor's entry on (rows lie in dof order, ancestors first)
+        let end = madr.get(k + 1).map_or(nm, |&a| a as usize);
+        let (head, row) = qld.split_at_mut(akk);
+        let row = &mut row[..end - akk];
+        let dkk = row[0];
         let mut i = parent[k];
-        while i >= 0 {
-            let iu = i as usize;
-            let tmp = qld[aki] / qld[akk];
-            let ai = madr[iu] as usize;
-            let cnt = (madr[iu + 1] - madr[iu]) as usize;
-            let s = -tmp;
-            let (head, tail) = qld.split_at_mut(aki);
-            for (x, y) in head[ai..ai + cnt].iter_mut().zip(&tail[..cnt]) {
-                *x += y * s;
+        for t in 1..row.len() {
+            let tmp = row[t] / dkk;
+            let ai = madr[i as usize] as usize;
+            let n = row.len() - t;
+            for (x, y) in head[ai..ai + n].iter_mut().zip(&row[t..]) {
+                *x -= y * tmp;
             }
-            qld[aki] = tmp;
-            i = parent[iu];
-            aki += 1;
+            row[t] = tmp;
+            i = parent[i as usize];
         }
     }
     for i in 0..nv {
