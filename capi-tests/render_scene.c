@@ -7,8 +7,8 @@
 //   render_scene quick MODEL...  the default case, segmentation and every visual flag only
 //   render_scene 2d MODEL...     also text, overlays, labels, pixels and buffers after the first
 //   render_scene small MODEL...  (with either of the above) the shadow map at most 1024 wide:
-//                                its size only scales the depth pass, at 4096 a fifth of a
-//                                model's time under llvmpipe
+//                                its size only scales the depth pass, at 4096 a quarter of a
+//                                quick run's time under llvmpipe and more of a full run's
 //   RENDER_PPM=DIR render_scene  also writes each frame as DIR/<model>-<case>.ppm
 #define GL_GLEXT_PROTOTYPES
 #include <GL/osmesa.h>
