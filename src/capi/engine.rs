@@ -766,7 +766,7 @@ pub unsafe extern "C" fn mj_addM(
             let colind = std::slice::from_raw_parts_mut(colind, len);
             return jacobian::add_m_sparse(mv, dv, slice_mut(dst, len), rownnz, rowadr, colind);
         }
-        jacobian::add_m_dense(mv, dv.qM, slice_mut(dst, nv * nv));
+        jacobian::add_m_dense(mv, dv.qM, slice_mut(dst, nv * nv), true);
         Ok(())
     })
 }

@@ -200,8 +200,9 @@ pub fn mul_m2(m: &Model, qld: &[f64], sqrt_inv: &[f64], res: &mut [f64], vec: &[
     }
 }
 
-/// dst += M, dst dense nv x nv (mj_addM without sparse arguments).
-pub fn add_m_dense(m: &Model, qm: &[f64], dst: &mut [f64]) {
+/// dst += M, dst dense nv x nv (mj_addM without sparse arguments); with `upper` false, only
+/// the lower triangle of dst (what a Cholesky factorization reads).
+pub fn add_m_dense(m: &Model, qm: &[f64], dst: &mut [f64], upper: bool) {
     let nv = m.raw.nv as usize;
     for i in 0..nv {
         let mut adr = m.dof_Madr()[i] as usize;
@@ -209,7 +210,7 @@ pub fn add_m_dense(m: &Model, qm: &[f64], dst: &mut [f64]) {
         while j >= 0 {
             let ju = j as usize;
             dst[i * nv + ju] += qm[adr];
-            if ju < i {
+            if upper && ju < i {
                 dst[ju * nv + i] += qm[adr];
             }
             if m.dof_simplenum()[i] != 0 {
@@ -256,10 +257,13 @@ pub fn add_m_sparse(
     rowadr: &[i32],
     colind: &mut [i32],
 ) -> Result<(), EngineError> {
-    add_m_sparse_with(m, d.qM, &mut d.arena, dst, rownnz, rowadr, colind)
+    add_m_sparse_with(m, d.qM, &mut d.arena, dst, rownnz, rowadr, colind, true)
 }
 
-/// `add_m_sparse` for a given qM, with scratch from `arena`.
+/// `add_m_sparse` for a given qM, with scratch from `arena`; with `upper` false, M's lower
+/// triangle only, into rows of dst that end at their diagonal (what a Cholesky factorization
+/// reads), each value as the whole sum gives it.
+#[allow(clippy::too_many_arguments)]
 pub fn add_m_sparse_with(
     m: &Model,
     qm: &[f64],
@@ -268,6 +272,7 @@ pub fn add_m_sparse_with(
     rownnz: &mut [i32],
     rowadr: &[i32],
     colind: &mut [i32],
+    upper: bool,
 ) -> Result<(), EngineError> {
     let nv = m.raw.nv as usize;
     let madr = m.dof_Madr();
@@ -326,7 +331,7 @@ pub fn add_m_sparse_with(
             mcol[i * nv..i * nv + cnt].reverse();
         }
         // mirror to the upper triangle
-        for i in 1..nv {
+        for i in (1..nv).filter(|_| upper) {
             if simple[i] != 0 {
                 continue;
             }

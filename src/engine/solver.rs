@@ -9,11 +9,11 @@ use super::solver_dual::{cost_change, noslip_elliptic, noslip_pyramid, pgs_ellip
 use super::{disabled, tick, Data, EngineError, Model, MINVAL};
 use crate::abi::view::Arena;
 use crate::abi::*;
-use crate::math::blas::{add_to_scl, dot, mul_mat_vec, norm, scl, sqr_mat_td, sub_from};
+use crate::math::blas::{add_to_scl, dot, mul_mat_vec, norm, scl, sqr_mat_td_lower, sub_from};
 use crate::math::chol::{chol_factor, chol_solve, chol_update, chol_update2};
 use crate::math::chol_sparse::{chol_factor_sparse, chol_solve_sparse, chol_update_sparse};
 use crate::math::sparse::{
-    compress_sparse, dot_sparse, mul_mat_vec_sparse, sqr_mat_td_sparse, SparseRef,
+    compress_sparse, dot_sparse, mul_mat_vec_sparse, sqr_mat_td_sparse_lower, SparseRef,
 };
 use mjtConstraintState_::*;
 
@@ -726,7 +726,7 @@ fn hessian_direct(m: &Model, d: &mut Data, a: &mut Arena, c: &mut Ctx) -> Result
             a.scope(|a| -> Result<(), EngineError> {
                 let chain = a.alloc_int_stale(2 * nv)?;
                 let buf = a.alloc_stale(nv)?;
-                sqr_mat_td_sparse(
+                sqr_mat_td_sparse_lower(
                     c.h,
                     d.efc_J,
                     d.efc_JT,
@@ -742,7 +742,7 @@ fn hessian_direct(m: &Model, d: &mut Data, a: &mut Arena, c: &mut Ctx) -> Result
                 );
                 Ok(())
             })?;
-            add_m_sparse_with(m, d.qM, a, c.h, c.rownnz, c.rowadr, c.colind)?;
+            add_m_sparse_with(m, d.qM, a, c.h, c.rownnz, c.rowadr, c.colind, false)?;
             let rank = a.scope(|a| -> Result<usize, EngineError> {
                 let buf_ind = a.alloc_int_stale(nv)?;
                 let buf = a.alloc_stale(nv)?;
@@ -757,8 +757,8 @@ fn hessian_direct(m: &Model, d: &mut Data, a: &mut Arena, c: &mut Ctx) -> Result
             compress_sparse(c.h, nv, c.rownnz, c.rowadr, c.colind);
             c.nnz = c.rownnz[..nv].iter().sum::<i32>() as usize;
         } else {
-            sqr_mat_td(c.h, d.efc_J, Some(hdiag), nefc, nv);
-            add_m_dense(m, d.qM, c.h);
+            sqr_mat_td_lower(c.h, d.efc_J, Some(hdiag), nefc, nv);
+            add_m_dense(m, d.qM, c.h, false);
             chol_factor(c.h, nv, MINVAL);
             c.nnz = nv * nv;
         }

@@ -286,6 +286,17 @@ pub fn mul_mat_t_mat(res: &mut [f64], mat1: &[f64], mat2: &[f64], r1: usize, c1:
 /// res (nc x nc) = mat^T * diag(d) * mat, or mat^T * mat without `diag`; mat is nr x nc.
 /// The lower triangle is accumulated, then mirrored.
 pub fn sqr_mat_td(res: &mut [f64], mat: &[f64], diag: Option<&[f64]>, nr: usize, nc: usize) {
+    sqr_mat_td_lower(res, mat, diag, nr, nc);
+    for i in 0..nc {
+        for j in i + 1..nc {
+            res[i * nc + j] = res[j * nc + i];
+        }
+    }
+}
+
+/// The lower triangle of `sqr_mat_td` (zeros above it), with the same values: enough for a
+/// Cholesky factorization, which reads nothing above the diagonal.
+pub fn sqr_mat_td_lower(res: &mut [f64], mat: &[f64], diag: Option<&[f64]>, nr: usize, nc: usize) {
     zero(&mut res[..nc * nc]);
     match diag {
         Some(d) => {
@@ -309,11 +320,6 @@ pub fn sqr_mat_td(res: &mut [f64], mat: &[f64], diag: Option<&[f64]>, nr: usize,
                     }
                 }
             }
-        }
-    }
-    for i in 0..nc {
-        for j in i + 1..nc {
-            res[i * nc + j] = res[j * nc + i];
         }
     }
 }

@@ -438,6 +438,39 @@ pub fn sqr_mat_td_sparse(
     chain: &mut [i32],
     buffer: &mut [f64],
 ) {
+    sqr_mat_td_sparse_lower(
+        res, mat, mat_t, diag, nc, res_rownnz, res_rowadr, res_colind, m, mt, chain, buffer,
+    );
+    // mirror to the upper triangle
+    for r in 1..nc {
+        let end = (nc * r + u(res_rownnz[r])).saturating_sub(1);
+        for a in nc * r..end {
+            let col = u(res_colind[a]);
+            let a1 = nc * col + u(res_rownnz[col]);
+            res_rownnz[col] += 1;
+            res[a1] = res[a];
+            res_colind[a1] = r as i32;
+        }
+    }
+}
+
+/// The lower triangle of `sqr_mat_td_sparse` (each row ends at its diagonal), with the same
+/// values: enough for a Cholesky factorization, which reads nothing above the diagonal.
+#[allow(clippy::too_many_arguments)]
+pub fn sqr_mat_td_sparse_lower(
+    res: &mut [f64],
+    mat: &[f64],
+    mat_t: &[f64],
+    diag: Option<&[f64]>,
+    nc: usize,
+    res_rownnz: &mut [i32],
+    res_rowadr: &mut [i32],
+    res_colind: &mut [i32],
+    m: &SparseRef,
+    mt: &SparseRef,
+    chain: &mut [i32],
+    buffer: &mut [f64],
+) {
     for (r, a) in res_rowadr[..nc].iter_mut().enumerate() {
         *a = (r * nc) as i32;
     }
@@ -543,18 +576,6 @@ pub fn sqr_mat_td_sparse(
         }
         for (x, &ci) in res[adr..adr + n].iter_mut().zip(&res_colind[adr..adr + n]) {
             *x = buffer[u(ci)];
-        }
-    }
-
-    // mirror to the upper triangle
-    for r in 1..nc {
-        let end = (nc * r + u(res_rownnz[r])).saturating_sub(1);
-        for a in nc * r..end {
-            let col = u(res_colind[a]);
-            let a1 = nc * col + u(res_rownnz[col]);
-            res_rownnz[col] += 1;
-            res[a1] = res[a];
-            res_colind[a1] = r as i32;
         }
     }
 }
