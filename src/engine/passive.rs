@@ -18,6 +18,12 @@ pub fn passive(m: &Model, d: &mut Data) -> Result<(), EngineError> {
         let mut padr = qposadr[j] as usize;
         let mut dadr = dofadr[j] as usize;
         match t {
+            t @ (JNT_FREE | JNT_BALL)
+                if k == 0.0 && finite_spring(d.qpos, m.qpos_spring(), padr, t) =>
+            {
+                // 0 * (a finite difference) is a zero, and subtracting a zero leaves the
+                // cleared force +0: skips the quaternion difference (an atan2) of each joint
+            }
             t @ (JNT_FREE | JNT_BALL) => {
                 if t == JNT_FREE {
                     for i in 0..3 {
@@ -57,4 +63,12 @@ pub fn passive(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     super::fluid::fluid(m, d)?;
     super::hooks::passive(m, d);
     Ok(())
+}
+
+/// Whether the positions and spring positions of a free or ball joint are all finite, so that
+/// their difference (a quaternion difference for the rotation) is finite too.
+fn finite_spring(qpos: &[f64], spring: &[f64], padr: usize, t: i32) -> bool {
+    let n = if t == JNT_FREE { 7 } else { 4 };
+    let (q, s) = (&qpos[padr..padr + n], &spring[padr..padr + n]);
+    q.iter().chain(s).all(|x| x.is_finite())
 }
