@@ -13,8 +13,8 @@ use crate::abi::view::Arena;
 use crate::abi::*;
 use crate::math::blas::{add_to_scl, mul_mat_t_vec, mul_mat_vec, norm, sqr_mat_td, transpose};
 use crate::math::sparse::{
-    combine_sparse, compress_sparse, mul_mat_vec_sparse, sqr_mat_td_sparse, super_sparse,
-    transpose_sparse, SparseRef,
+    combine_sparse, compress_sparse, mirror_lower_sparse, mul_mat_vec_sparse,
+    sqr_mat_td_sparse_lower, super_sparse, transpose_sparse, SparseRef,
 };
 use crate::math::*;
 use mjtConstraintState_::*;
@@ -917,7 +917,7 @@ fn project_sparse(
         colind,
         rowsuper: Some(rowsuper),
     };
-    sqr_mat_td_sparse(
+    sqr_mat_td_sparse_lower(
         d.efc_AR,
         jm2t,
         jm2,
@@ -931,6 +931,7 @@ fn project_sparse(
         chain,
         buffer,
     );
+    mirror_lower_sparse(d.efc_AR, nefc, d.efc_AR_rownnz, d.efc_AR_colind);
     compress_sparse(
         d.efc_AR,
         nefc,

@@ -413,7 +413,7 @@ fn add_rows_below<const N: usize>(
     }
 }
 
-/// Sparse pattern and index inputs of `sqr_mat_td_sparse`.
+/// Sparse pattern and index inputs of `sqr_mat_td_sparse_lower`.
 pub struct SparseRef<'a> {
     pub rownnz: &'a [i32],
     pub rowadr: &'a [i32],
@@ -421,27 +421,14 @@ pub struct SparseRef<'a> {
     pub rowsuper: Option<&'a [i32]>,
 }
 
-/// res (nc x nc, uncompressed with stride nc) = mat^T * diag * mat, mat being nr x nc and
-/// matT its transpose. `chain` needs 2*nc ints and `buffer` nc values of scratch.
-#[allow(clippy::too_many_arguments)]
-pub fn sqr_mat_td_sparse(
+/// Mirrors the lower triangle that `sqr_mat_td_sparse_lower` wrote (rows of stride nc ending
+/// at their diagonal) to the upper one: the whole of mju_sqrMatTDSparse's result.
+pub fn mirror_lower_sparse(
     res: &mut [f64],
-    mat: &[f64],
-    mat_t: &[f64],
-    diag: Option<&[f64]>,
     nc: usize,
     res_rownnz: &mut [i32],
-    res_rowadr: &mut [i32],
     res_colind: &mut [i32],
-    m: &SparseRef,
-    mt: &SparseRef,
-    chain: &mut [i32],
-    buffer: &mut [f64],
 ) {
-    sqr_mat_td_sparse_lower(
-        res, mat, mat_t, diag, nc, res_rownnz, res_rowadr, res_colind, m, mt, chain, buffer,
-    );
-    // mirror to the upper triangle
     for r in 1..nc {
         let end = (nc * r + u(res_rownnz[r])).saturating_sub(1);
         for a in nc * r..end {
@@ -454,8 +441,10 @@ pub fn sqr_mat_td_sparse(
     }
 }
 
-/// The lower triangle of `sqr_mat_td_sparse` (each row ends at its diagonal), with the same
-/// values: enough for a Cholesky factorization, which reads nothing above the diagonal.
+/// res (nc x nc, uncompressed with stride nc) = mat^T * diag * mat, mat being nr x nc and
+/// matT its transpose, in the lower triangle (each row ends at its diagonal): enough for a
+/// Cholesky factorization, which reads nothing above the diagonal; `mirror_lower_sparse` then
+/// gives the whole matrix. `chain` needs 2*nc ints and `buffer` nc values of scratch.
 #[allow(clippy::too_many_arguments)]
 pub fn sqr_mat_td_sparse_lower(
     res: &mut [f64],

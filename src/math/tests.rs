@@ -413,7 +413,7 @@ fn sparse_products_match_dense() {
         };
         let (mut h, mut hn, mut ha, mut hc) = ([0.0; 25], [0; 5], [0; 5], [0; 25]);
         let (mut chain, mut buffer) = ([0; 10], [0.0; 5]);
-        sqr_mat_td_sparse(
+        sqr_mat_td_sparse_lower(
             &mut h,
             &s,
             &t,
@@ -427,6 +427,7 @@ fn sparse_products_match_dense() {
             &mut chain,
             &mut buffer,
         );
+        mirror_lower_sparse(&mut h, nc, &mut hn, &mut hc);
         let mut hd = [0.0; 25];
         sparse2dense(&mut hd, &h, nc, nc, &hn, &ha, &hc);
         assert!(close(&hd, &dense, 1e-14), "{hd:?}");
