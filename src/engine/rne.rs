@@ -29,32 +29,38 @@ pub fn rne_with(
             let bda = m.body_dofadr()[i].max(0) as usize;
             let n = m.body_dofnum()[i] as usize;
             let p = m.body_parentid()[i] as usize;
+            // rows as arrays: one bounds check a row, not one an element
+            let mut acc: Vec6 = row(cacc, p);
             let tmp = mul_dof_vec(&d.cdof_dot[6 * bda..], &d.qvel[bda..], n);
             for k in 0..6 {
-                cacc[6 * i + k] = cacc[6 * p + k] + tmp[k];
+                acc[k] += tmp[k];
             }
             if let Some(qacc) = qacc {
                 let tmp = mul_dof_vec(&d.cdof[6 * bda..], &qacc[bda..], n);
                 for k in 0..6 {
-                    cacc[6 * i + k] += tmp[k];
+                    acc[k] += tmp[k];
                 }
             }
+            put(cacc, i, &acc);
             let ci = &d.cinert[10 * i..10 * i + 10];
             let cv = row::<6>(d.cvel, i);
-            let f = mul_inert_vec(ci, &row(cacc, i));
+            let mut f = mul_inert_vec(ci, &acc);
             let tmp = mul_inert_vec(ci, &cv);
             let tmp1 = cross_force(&cv, &tmp);
             for k in 0..6 {
-                cfrc[6 * i + k] = f[k] + tmp1[k];
+                f[k] += tmp1[k];
             }
+            put(cfrc, i, &f);
         }
         cfrc[..6].fill(0.0);
         for i in (1..nbody).rev() {
             let p = m.body_parentid()[i] as usize;
             if p != 0 {
+                let (child, mut sum): (Vec6, Vec6) = (row(cfrc, i), row(cfrc, p));
                 for k in 0..6 {
-                    cfrc[6 * p + k] += cfrc[6 * i + k];
+                    sum[k] += child[k];
                 }
+                put(cfrc, p, &sum);
             }
         }
         for i in 0..nv {
@@ -186,9 +192,9 @@ pub fn rne_post_constraint(m: &Model, d: &mut Data) -> Result<(), EngineError> {
         let n = m.body_dofnum()[i] as usize;
         let p = m.body_parentid()[i] as usize;
         let vel = mul_dof_vec(&d.cdof_dot[6 * bda..], &d.qvel[bda..], n);
-        let mut acc = [0.0; 6];
+        let mut acc: Vec6 = row(d.cacc, p);
         for k in 0..6 {
-            acc[k] = d.cacc[6 * p + k] + vel[k];
+            acc[k] += vel[k];
         }
         let qa = mul_dof_vec(&d.cdof[6 * bda..], &d.qacc[bda..], n);
         for k in 0..6 {
@@ -200,20 +206,22 @@ pub fn rne_post_constraint(m: &Model, d: &mut Data) -> Result<(), EngineError> {
         let cv = row::<6>(d.cvel, i);
         let mut body = mul_inert_vec(ci, &acc);
         let corr = cross_force(&cv, &mul_inert_vec(ci, &cv));
+        let ext: Vec6 = row(d.cfrc_ext, i);
         for k in 0..6 {
             body[k] += corr[k];
+            body[k] -= ext[k];
         }
-        for k in 0..6 {
-            d.cfrc_int[6 * i + k] = body[k] - d.cfrc_ext[6 * i + k];
-        }
+        put(d.cfrc_int, i, &body);
     }
 
     // backward pass: children's forces into parents
     for i in (1..nbody).rev() {
         let p = m.body_parentid()[i] as usize;
+        let (child, mut sum): (Vec6, Vec6) = (row(d.cfrc_int, i), row(d.cfrc_int, p));
         for k in 0..6 {
-            d.cfrc_int[6 * p + k] += d.cfrc_int[6 * i + k];
+            sum[k] += child[k];
         }
+        put(d.cfrc_int, p, &sum);
     }
     Ok(())
 }
