@@ -330,18 +330,9 @@ pub fn add_m_sparse_with(
             mat[i * nv..i * nv + cnt].reverse();
             mcol[i * nv..i * nv + cnt].reverse();
         }
-        // mirror to the upper triangle
-        for i in (1..nv).filter(|_| upper) {
-            if simple[i] != 0 {
-                continue;
-            }
-            for k in nv * i..nv * i + mnnz[i] as usize - 1 {
-                let c = mcol[k] as usize;
-                let dst_k = nv * c + mnnz[c] as usize;
-                mnnz[c] += 1;
-                mat[dst_k] = mat[k];
-                mcol[dst_k] = i as i32;
-            }
+        // the upper triangle too (simple rows are empty: nothing to mirror from them)
+        if upper {
+            crate::math::sparse::mirror_lower_sparse(mat, nv, mnnz, mcol);
         }
         for i in 0..nv {
             if simple[i] != 0 {
