@@ -4,7 +4,8 @@
 //   harness-ref  record  MODEL DIR   reference run: model, trajectory, states, all checks -> DIR/ref
 //   harness-ours replay  MODEL DIR   our run: the same checks at the reference's states -> DIR/ours
 //   (record/replay MODEL DIR --model-only: the compiled model only; --groups a,b: those check
-//   groups only, plus forward, which the others read; --disable FLAGS: or FLAGS into
+//   groups only, plus forward, which the others read: trajectories beyond the reference's
+//   (ours, and its perturbed one for the noise floor) only with traj; --disable FLAGS: or FLAGS into
 //   opt.disableflags of every model, e.g. 3 = constraints and contacts off; record --states N:
 //   N states along the trajectory instead of 50, for large models)
 //   harness-ref  compare DIR [-v] [--groups a,b]   worst relative error per quantity, exit 1 on
@@ -25,6 +26,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <algorithm>
 #include <functional>
 #include <string>
 
@@ -148,18 +150,21 @@ int record(const char* model, const std::string& dir, bool model_only, const std
     std::string r = saved(states, dir + "/states.bin");
     return r.empty() ? saved(traj, out + "traj.bin") : r;
   }, kSeconds) && ok;
-  // the reference's noise floors: a perturbed trajectory, and forward at perturbed states
+  // the reference's noise floors: a perturbed trajectory (for the traj group only), and
+  // forward at perturbed states
   std::vector<std::pair<std::string, Check>> checks = state_checks();
   checks.push_back({"noise", check_noise});
-  isolated(out + "trajnoise.status", [&]() -> std::string {
-    std::string e;
-    mjModel* m = child_model(e);
-    if (!m) return e;
-    mjData* d = mj_makeData(m);
-    Writer traj;
-    run_trajectory(m, d, traj, nullptr, true);
-    return saved(traj, out + "trajnoise.bin");
-  }, kSeconds);
+  if (selected(only, "traj")) {
+    isolated(out + "trajnoise.status", [&]() -> std::string {
+      std::string e;
+      mjModel* m = child_model(e);
+      if (!m) return e;
+      mjData* d = mj_makeData(m);
+      Writer traj;
+      run_trajectory(m, d, traj, nullptr, true);
+      return saved(traj, out + "trajnoise.bin");
+    }, kSeconds);
+  }
   // read once here and shared with every group's child (forward.bin once the forward group,
   // which runs first, has written it)
   Reader states, post;
@@ -201,7 +206,8 @@ int replay(const char* model, const std::string& dir, bool model_only, const std
   bool have_ref = refmodel.load(ref + "model.bin");
   // our loader's result decides the trajectory's model (a failing mj_loadXML cannot return)
   bool loads = read_status(out + "model.status") == "ok";
-  isolated(out + "traj.status", [&]() -> std::string {
+  // our trajectory: compared in the traj group only
+  if (selected(only, "traj")) isolated(out + "traj.status", [&]() -> std::string {
     std::string e;
     mjModel* m = nullptr;
     if (loads) {
@@ -254,16 +260,20 @@ int compare(const std::string& dir, bool verbose, const std::string& only) {
   int npass = 0;
   double worst = 0, residual = 0;
   Floors floors = noise_floors(dir + "/ref/forward.bin", dir + "/ref/noise.bin");
-  Floors traj_floors = noise_floors(dir + "/ref/traj.bin", dir + "/ref/trajnoise.bin");
+  bool traj = std::find(groups.begin(), groups.end(), "traj") != groups.end();
+  Floors traj_floors;
+  if (traj) traj_floors = noise_floors(dir + "/ref/traj.bin", dir + "/ref/trajnoise.bin");
   bool dynamic = false;
   for (const std::string& g : groups) dynamic = dynamic || !static_group(g);
   if (dynamic) {
-    std::printf("  noise floor of the reference (state perturbed by %.0e): forward %.2e, trajectory %.2e\n",
-                kNoise, floors.model, traj_floors.model);
+    std::printf("  noise floor of the reference (state perturbed by %.0e): forward %.2e", kNoise,
+                floors.model);
+    if (traj) std::printf(", trajectory %.2e", traj_floors.model);
+    std::printf("\n");
   }
   if (dynamic && verbose) {
-    std::printf("    forward floor at %s\n    trajectory floor at %s\n", floors.at.c_str(),
-                traj_floors.at.c_str());
+    std::printf("    forward floor at %s\n", floors.at.c_str());
+    if (traj) std::printf("    trajectory floor at %s\n", traj_floors.at.c_str());
   }
   for (const std::string& g : groups) {
     double gw;

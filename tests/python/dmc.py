@@ -1,11 +1,12 @@
 """dm_control's suite: every domain and task loads; reset and STEPS steps with seeded random
 actions. Prints, per task, a digest of every observation and reward and the last values exactly.
 
-With --render (needs MUJOCO_GL=egl or osmesa), each task also renders through
-physics.render at reset, half way and at the end: RGB from the free camera (-1) and from camera
-0 where the model has one, and at the end a depth and a segmentation image (and, for height
-fields, RGB again after a second reset); one line per task with a digest of all the pixel arrays
-and the figures of the last RGB frame.
+With --render (needs MUJOCO_GL=egl or osmesa), the first task of each model (a domain's tasks
+mostly share one) also renders through physics.render at reset, half way and at the end: RGB
+from the free camera (-1) and from camera 0 where the model has one, and at the end a depth and a
+segmentation image (and, for height fields, RGB again after a second reset); its line ends with a
+digest of all the pixel arrays and the figures of the last RGB frame, the other tasks' lines
+with the task whose frames stand for theirs.
 
 Usage: dmc.py [STEPS] [--render] [DOMAIN/TASK ...] [-DOMAIN/TASK ...]"""
 
@@ -48,6 +49,12 @@ def render(phys, pixels, frames, final):
     return None
 
 
+def model_key(domain, m):
+    """What tells a domain's models apart: tasks with the same key render alike."""
+    return (domain, m.nbody, m.ngeom, m.nmesh, m.ntex, m.nhfield, m.nmat, m.ncam, m.nlight)
+
+
+rendered = {}  # model key -> the task that rendered it
 for domain, task in suite.ALL_TASKS:
     if f"{domain}/{task}" in without or (only and f"{domain}/{task}" not in only):
         continue
@@ -55,8 +62,13 @@ for domain, task in suite.ALL_TASKS:
     spec = env.action_spec()
     rng = np.random.RandomState(0)
     digest, pixels, frames = hashlib.sha256(), hashlib.sha256(), [0]
+    key = model_key(domain, env.physics.model)
+    stand_in = rendered.get(key)
+    render_task = RENDER and stand_in is None
+    if render_task:
+        rendered[key] = f"{domain}/{task}"
     ts = env.reset()
-    if RENDER:
+    if render_task:
         render(env.physics, pixels, frames, False)
     total, note, figures = 0.0, "", ""
     for step in range(STEPS):
@@ -69,10 +81,12 @@ for domain, task in suite.ALL_TASKS:
         for k in sorted(ts.observation):
             digest.update(np.ascontiguousarray(ts.observation[k], dtype=np.float64).tobytes())
         digest.update(np.float64(ts.reward or 0.0).tobytes())
-        if RENDER and step + 1 == STEPS // 2:
+        if render_task and step + 1 == STEPS // 2:
             render(env.physics, pixels, frames, False)
     phys = env.physics
-    if RENDER:
+    if RENDER and not render_task:
+        figures = f" rendered with {stand_in}"
+    elif RENDER:
         last = render(phys, pixels, frames, True)
         if phys.model.nhfield:  # a new terrain goes up through mjr_uploadHField at reset
             env.reset()
