@@ -421,8 +421,6 @@ fn dm_control_suite_same_numbers_and_pixels() {
     );
     if let Some(out) = &osmesa {
         assert_eq!(out.lines().count(), 6, "{out}");
-    }
-    if let Some(out) = &osmesa {
         assert_eq!(pixel_lines(out).len(), 6, "{out}");
     }
     if let Some(out) = &egl {

@@ -84,15 +84,15 @@ for domain, task in suite.ALL_TASKS:
         if render_task and step + 1 == STEPS // 2:
             render(env.physics, pixels, frames, False)
     phys = env.physics
-    if RENDER and not render_task:
-        figures = f" rendered with {stand_in}"
-    elif RENDER:
+    if render_task:
         last = render(phys, pixels, frames, True)
         if phys.model.nhfield:  # a new terrain goes up through mjr_uploadHField at reset
             env.reset()
             render(env.physics, pixels, frames, False)
             last += f", after a second reset {frames[0]} frames"
         figures = f" pixels {pixels.hexdigest()[:32]} {last}"
+    elif RENDER:
+        figures = f" rendered with {stand_in}"
     print(f"{domain}/{task}: return {total.hex()} time {phys.data.time.hex()} "
           f"qpos0 {float(phys.data.qpos[0]).hex() if phys.model.nq else '-'} "
           f"digest {digest.hexdigest()[:32]}{figures}{note}", flush=True)
