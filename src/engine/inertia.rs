@@ -78,6 +78,9 @@ pub fn factor_i(
             let n = row.len() - t;
             for (x, y) in head[ai..ai + n].iter_mut().zip(&row[t..]) {
                 *x -= y * tmp;
+                // kept scalar: the next rows read these entries back one at a time, which
+                // wide stores cannot forward (a tenth off a humanoid's factorization)
+                std::hint::black_box(());
             }
             row[t] = tmp;
             i = parent[i as usize];
