@@ -99,26 +99,13 @@ fn sh(cmd: &mut Command, what: &str) -> Result<(), String> {
 /// copy of ours with Debian's library in place of ours, so that both sides run the same
 /// compiled bindings and differ only in the library (the drop-in case). Rebuilt when the
 /// headers or the build backend change; ours gets the current libmujoco.so copied in at every
-/// run. A lock per side (the reference's taken before ours) lets the build run in another
-/// process beside the tests (`prepare`, started early by capi-tests/run-all).
+/// run.
 fn build_venv(side: Side) -> Result<PathBuf, String> {
     let dir = target_dir().join("python");
     let venv = dir.join(format!("venv-{}", side.name()));
     let py = venv.join("bin/python");
     let stamp_file = venv.join("rujoco-stamp");
     let want = stamp();
-    std::fs::create_dir_all(&dir).map_err(|e| format!("{}: {e}", dir.display()))?;
-    let lock = dir.join(format!("venv-{}.lock", side.name()));
-    let lock = std::fs::File::create(&lock).map_err(|e| format!("{}: {e}", lock.display()))?;
-    // std's File::lock is newer than the crate's rust-version; released when `lock` closes
-    use std::os::fd::AsRawFd;
-    // SAFETY: flock on a descriptor this function owns until it returns
-    if unsafe { libc::flock(lock.as_raw_fd(), libc::LOCK_EX) } != 0 {
-        return Err(format!(
-            "locking the venv: {}",
-            std::io::Error::last_os_error()
-        ));
-    }
     if std::fs::read_to_string(&stamp_file).ok().as_deref() != Some(want.as_str()) {
         let _ = std::fs::remove_dir_all(&venv);
         if side == Side::Ref {
@@ -338,16 +325,6 @@ fn same_output(name: &str, gl: Gl, script: &str, args: &[&str], seconds: u32) ->
         differ.join("\n")
     );
     Some(reference)
-}
-
-/// Builds both venvs and nothing else: capi-tests/run-all starts it in the background at the
-/// lowest priority once the library is built, so that the build takes the cycles the tests
-/// before this one leave idle (`--ignored --exact prepare`).
-#[test]
-#[ignore]
-fn prepare() {
-    python(Side::Ours);
-    python(Side::Ref);
 }
 
 #[test]

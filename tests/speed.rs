@@ -18,18 +18,6 @@ const RUNS: usize = 3;
 
 /// Held by each measurement, so that the two never share the cores.
 static QUIET: std::sync::Mutex<()> = std::sync::Mutex::new(());
-
-/// QUIET, once the builds capi-tests/run-all runs in the background (target/prepare.lock, held
-/// until they end) are over: none may share the cores with a measurement.
-fn quiet() -> std::sync::MutexGuard<'static, ()> {
-    let guard = QUIET.lock().unwrap_or_else(|e| e.into_inner());
-    if let Ok(f) = std::fs::File::open(target_dir().join("prepare.lock")) {
-        use std::os::fd::AsRawFd;
-        // SAFETY: flock on a descriptor this block owns; the lock goes with `f`
-        unsafe { libc::flock(f.as_raw_fd(), libc::LOCK_SH) };
-    }
-    guard
-}
 /// mjDSBL_CONSTRAINT | mjDSBL_CONTACT
 const SMOOTH: &str = "17";
 
@@ -57,7 +45,7 @@ fn rate(prog: &Path, steps: usize, flags: &str, model: &Path) -> Result<f64, Str
 
 #[test]
 fn speed_against_the_reference() {
-    let _quiet = quiet();
+    let _quiet = QUIET.lock();
     let src = [root().join("capi-tests/bench.c")];
     let reference = compile_c(&src, "bench", Lib::Ref);
     let ours = compile_c(&src, "bench", Lib::Ours);
@@ -143,7 +131,7 @@ fn speed_against_the_reference() {
 /// capi-tests/ab.c (bench --ab): both libraries in one process, alternating blocks of steps.
 #[test]
 fn one_process_ratios() {
-    let _quiet = quiet();
+    let _quiet = QUIET.lock();
     require_reference();
     let exe = work_dir("bin").join("ab");
     let o = std::process::Command::new("gcc")
@@ -198,7 +186,7 @@ fn one_process_ratios() {
 /// Loading speed: every corpus and project model both libraries load, each once a run.
 #[test]
 fn loading_speed() {
-    let _quiet = quiet();
+    let _quiet = QUIET.lock();
     let src = [root().join("capi-tests/loader.c")];
     let reference = compile_c(&src, "loader-time", Lib::Ref);
     let ours = compile_c(&src, "loader-time", Lib::Ours);

@@ -73,46 +73,6 @@ fn nightly_tsan() -> Result<(), String> {
         .ok_or_else(|| format!("no ThreadSanitizer runtime in {}", dir.display()))
 }
 
-/// The threads example built under ThreadSanitizer (its own target directory, whose cargo lock
-/// lets `prepare` build it in another process beside the tests).
-fn build_tsan() -> PathBuf {
-    let dir = target_dir().join("tsan");
-    let o = Command::new("cargo")
-        .args(["+nightly", "build", "--release", "--example", "threads"])
-        .args(["--target", "x86_64-unknown-linux-gnu", "--target-dir"])
-        .arg(&dir)
-        .current_dir(root())
-        .env(
-            "RUSTFLAGS",
-            // std comes prebuilt without instrumentation (no rust-src here); the
-            // threads are POSIX threads, whose create and join TSan sees
-            "-Zsanitizer=thread -Cunsafe-allow-abi-mismatch=sanitizer",
-        )
-        .env_remove("CARGO_TARGET_DIR")
-        // builds in parallel (a third less time here) and at -O1 (a fifth less; the
-        // level ThreadSanitizer's documentation suggests); the run is a little slower
-        .env("CARGO_PROFILE_RELEASE_CODEGEN_UNITS", "16")
-        .env("CARGO_PROFILE_RELEASE_OPT_LEVEL", "1")
-        .output()
-        .expect("cargo");
-    assert!(
-        o.status.success(),
-        "building under ThreadSanitizer failed:\n{}",
-        text(&o.stderr)
-    );
-    dir.join("x86_64-unknown-linux-gnu/release/examples/threads")
-}
-
-/// Builds the ThreadSanitizer example and nothing else: capi-tests/run-all starts it in the
-/// background at the lowest priority once the library is built (`--ignored --exact prepare`).
-#[test]
-#[ignore]
-fn prepare() {
-    if nightly_tsan().is_ok() {
-        build_tsan();
-    }
-}
-
 #[test]
 fn threads_share_a_model() {
     let prog = target_dir().join("release/examples/threads");
@@ -127,7 +87,31 @@ fn threads_share_a_model() {
     match nightly_tsan() {
         Err(why) => body.push_str(&format!("ThreadSanitizer: not run ({why})\n")),
         Ok(()) => {
-            let tsan = build_tsan();
+            let dir = target_dir().join("tsan");
+            let o = Command::new("cargo")
+                .args(["+nightly", "build", "--release", "--example", "threads"])
+                .args(["--target", "x86_64-unknown-linux-gnu", "--target-dir"])
+                .arg(&dir)
+                .current_dir(root())
+                .env(
+                    "RUSTFLAGS",
+                    // std comes prebuilt without instrumentation (no rust-src here); the
+                    // threads are POSIX threads, whose create and join TSan sees
+                    "-Zsanitizer=thread -Cunsafe-allow-abi-mismatch=sanitizer",
+                )
+                .env_remove("CARGO_TARGET_DIR")
+                // builds in parallel (a third less time here) and at -O1 (a fifth less; the
+                // level ThreadSanitizer's documentation suggests); the run is a little slower
+                .env("CARGO_PROFILE_RELEASE_CODEGEN_UNITS", "16")
+                .env("CARGO_PROFILE_RELEASE_OPT_LEVEL", "1")
+                .output()
+                .expect("cargo");
+            assert!(
+                o.status.success(),
+                "building under ThreadSanitizer failed:\n{}",
+                text(&o.stderr)
+            );
+            let tsan = dir.join("x86_64-unknown-linux-gnu/release/examples/threads");
             let opts = format!(
                 "halt_on_error=1 suppressions={}",
                 root().join("capi-tests/tsan.supp").display()
