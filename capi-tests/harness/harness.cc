@@ -26,7 +26,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <algorithm>
 #include <functional>
 #include <string>
 
@@ -260,7 +259,7 @@ int compare(const std::string& dir, bool verbose, const std::string& only) {
   int npass = 0;
   double worst = 0, residual = 0;
   Floors floors = noise_floors(dir + "/ref/forward.bin", dir + "/ref/noise.bin");
-  bool traj = std::find(groups.begin(), groups.end(), "traj") != groups.end();
+  bool traj = selected(only, "traj");
   Floors traj_floors;
   if (traj) traj_floors = noise_floors(dir + "/ref/traj.bin", dir + "/ref/trajnoise.bin");
   bool dynamic = false;
