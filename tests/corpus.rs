@@ -56,45 +56,23 @@ fn corpus() -> Option<&'static [Model]> {
         let base = work_dir("corpus");
         let main = main_corpus_files();
         let files = corpus_files();
-        let dir = |i: usize| base.join(i.to_string()).to_string_lossy().into_owned();
-        // the compiled models first (small runs: they tell the size and whether ours loads
-        // the model), then the physics of those both load, the largest first, so that no
-        // large model is left running alone at the end
-        let compiled = par_map_harness(&files, |i, f| compile(&bin, f, &dir(i)));
-        let mut order: Vec<usize> = (0..files.len())
-            .filter(|&i| matches!(compiled[i], (Some((true, _)), nv) if nv <= MAX_NV))
-            .collect();
-        order.sort_by_key(|&i| std::cmp::Reverse(compiled[i].1));
-        let mut runs: Vec<Option<Physics>> = (0..files.len()).map(|_| None).collect();
-        let done = par_map_harness(&order, |_, &i| {
-            let (f, ds) = (&files[i], dir(i));
-            let nv = compiled[i].1;
-            let p = physics(&bin, f, &f.to_string_lossy(), &ds, main.contains(f), nv);
+        // one run per file, in the corpus's order: the main corpus, which holds the largest
+        // models, first, so that no large model is left running alone at the end
+        let runs = par_map_harness(&files, |i, f| {
+            let ds = base.join(i.to_string()).to_string_lossy().into_owned();
+            let run = check(&bin, f, &ds, main.contains(f));
             let _ = std::fs::remove_dir_all(&ds);
-            p
+            run
         });
-        for (&i, p) in order.iter().zip(done) {
-            runs[i] = Some(p);
-        }
-        compiled
-            .into_iter()
-            .zip(runs)
-            .enumerate()
-            .map(|(i, ((compiled, _), run))| {
+        runs.into_iter()
+            .zip(&files)
+            .map(|((compiled, physics), f)| {
                 let rel = dirs
                     .iter()
-                    .find_map(|d| files[i].strip_prefix(d.parent().unwrap_or(d)).ok())
-                    .unwrap_or(&files[i])
+                    .find_map(|d| f.strip_prefix(d.parent().unwrap_or(d)).ok())
+                    .unwrap_or(f)
                     .display()
                     .to_string();
-                let physics = match (run, &compiled) {
-                    (Some(p), _) => p,
-                    (None, None) => Physics::Skipped, // include files, malformed models
-                    (None, Some((false, _))) => {
-                        Physics::Unsupported(format!("{}: compiler", files[i].display()))
-                    }
-                    (None, Some((true, _))) => Physics::Skipped, // nv above MAX_NV
-                };
                 Model {
                     rel,
                     compiled,
@@ -105,41 +83,69 @@ fn corpus() -> Option<&'static [Model]> {
     }))
 }
 
-/// The compiled-model comparison (None: the reference rejects the file) and the model's nv.
-fn compile(bin: &Path, f: &Path, ds: &str) -> (Option<(bool, String)>, i32) {
+/// One file: the compiled model (None: the reference rejects the file; else identical, and the
+/// comparator's line), and the physics when both libraries load it to the same model: full
+/// physics (with the compiled model, in one run), and with `smooth` the run with constraints
+/// and contacts disabled.
+fn check(bin: &Path, f: &Path, ds: &str, smooth: bool) -> (Option<(bool, String)>, Physics) {
     let _ = std::fs::remove_dir_all(ds);
-    let compiled = harness_compare(
-        bin,
-        &f.to_string_lossy(),
-        ds,
-        &["--model-only"],
-        &["--groups", "model"],
-        120,
-    )
-    .map(|(ok, out)| (ok, out.lines().next().unwrap_or("").trim().to_string()));
-    let nv = model_nv(ds);
-    let _ = std::fs::remove_dir_all(ds);
-    (compiled, nv)
-}
-
-/// The physics of a model both libraries load; `smooth`: also the run with constraints and
-/// contacts disabled.
-fn physics(bin: &Path, f: &Path, fs: &str, ds: &str, smooth: bool, nv: i32) -> Physics {
+    let fs = f.to_string_lossy();
     let rel = f.display().to_string();
-    let states: &[&str] = if nv > FEW_STATES_NV {
-        &["--states", "10"]
+    let (states, max_nv) = (FEW_STATES_NV.to_string(), MAX_NV.to_string());
+    let sized = [
+        "--states",
+        "10",
+        "--states-above",
+        &states,
+        "--max-nv",
+        &max_nv,
+    ];
+    let g = "model,forward,step,collision";
+    let Some((ok, out)) = harness_run(bin, &fs, ds, &[&["--groups", g], &sized[..]].concat())
+    else {
+        return (None, Physics::Skipped); // include files, malformed models
+    };
+    let line = |group: &str| {
+        out.lines()
+            .map(str::trim)
+            .find(|l| l.split_whitespace().next() == Some(group))
+            .unwrap_or("")
+            .to_string()
+    };
+    let model = line("model");
+    let compiled = Some((model.contains(" PASS "), model));
+    if !compiled.as_ref().is_some_and(|c| c.0) {
+        return (compiled, Physics::Unsupported(format!("{rel}: compiler")));
+    }
+    if !ok.physics {
+        return (compiled, Physics::Skipped); // the reference stops, or nv above MAX_NV
+    }
+    let full = if ok.passed {
+        Ok(["forward", "step", "collision"]
+            .iter()
+            .filter_map(|g| {
+                line(g)
+                    .split("worst ")
+                    .nth(1)?
+                    .split_whitespace()
+                    .next()?
+                    .parse()
+                    .ok()
+            })
+            .fold(0.0, f64::max))
+    } else if out.contains("not implemented") {
+        return (
+            compiled,
+            Physics::Unsupported(format!("{rel}: not implemented")),
+        );
     } else {
-        &[]
+        Err(format!("{rel}:\n{out}"))
     };
     // smooth dynamics: constraints and contacts off on both sides
     let g = ["--groups", "forward,jacBody,jacSite"];
-    let smooth_run = [
-        &["--groups", "forward,jacBody,jacSite", "--disable", "17"],
-        states,
-    ]
-    .concat();
+    let smooth_run = [&g[..], &["--disable", "17"], &sized[..]].concat();
     let smooth = match smooth
-        .then(|| harness_compare(bin, fs, ds, &smooth_run, &g, 600))
+        .then(|| harness_compare(bin, &fs, ds, &smooth_run, &g, 600))
         .flatten()
     {
         Some((true, _)) => Ok(true),
@@ -148,23 +154,47 @@ fn physics(bin: &Path, f: &Path, fs: &str, ds: &str, smooth: bool, nv: i32) -> P
         }
         _ => Ok(false),
     };
-    let g = ["--groups", "forward,step,collision"];
-    let full_run = [&g[..], states].concat();
-    let Some((ok, out)) = harness_compare(bin, fs, ds, &full_run, &g, 600) else {
-        return Physics::Skipped; // the reference stops on this model
+    (compiled, Physics::Checked { smooth, full })
+}
+
+/// How a run went: whether the physics ran (the reference did not stop, nv at most MAX_NV) and
+/// whether every compared group passed.
+struct Run {
+    physics: bool,
+    passed: bool,
+}
+
+/// The harness on one file with `args`: None when the reference rejects the file; else how it
+/// went and the comparator's output (the physics groups compared only when they ran).
+fn harness_run(bin: &Path, model: &str, ds: &str, args: &[&str]) -> Option<(Run, String)> {
+    let side = |exe: &str, mode: &str| {
+        let a: Vec<&str> = [mode, model, ds]
+            .into_iter()
+            .chain(args.iter().copied())
+            .collect();
+        run(&bin.join(exe), &a, &[], 600).status.success()
     };
-    let full = if ok {
-        Ok(out
-            .lines()
-            .filter_map(|l| l.split("check groups pass; worst relative error ").nth(1))
-            .filter_map(|w| w.split_whitespace().next()?.parse::<f64>().ok())
-            .fold(0.0, f64::max))
-    } else if out.contains("not implemented") {
-        return Physics::Unsupported(format!("{rel}: not implemented"));
+    let recorded = side("harness-ref", "record");
+    let status =
+        std::fs::read_to_string(Path::new(ds).join("ref/model.status")).unwrap_or_default();
+    if status.trim() != "ok" {
+        return None;
+    }
+    side("harness-ours", "replay");
+    let physics = recorded && model_nv(ds) <= MAX_NV;
+    let groups = if physics {
+        args[args.iter().position(|a| *a == "--groups")? + 1]
     } else {
-        Err(format!("{rel}:\n{out}"))
+        "model"
     };
-    Physics::Checked { smooth, full }
+    let c = run(
+        &bin.join("harness-ref"),
+        &["compare", ds, "--groups", groups],
+        &[],
+        600,
+    );
+    let passed = c.status.success();
+    Some((Run { physics, passed }, text(&c.stdout)))
 }
 
 #[test]

@@ -7,7 +7,8 @@
 //   groups only, plus forward, which the others read: trajectories beyond the reference's
 //   (ours, and its perturbed one for the noise floor) only with traj; --disable FLAGS: or FLAGS into
 //   opt.disableflags of every model, e.g. 3 = constraints and contacts off; record --states N:
-//   N states along the trajectory instead of 50, for large models)
+//   N states along the trajectory instead of 50, for large models, with --states-above NV: only
+//   for models above nv NV; --max-nv NV: models above nv NV get their compiled model only)
 //   harness-ref  compare DIR [-v] [--groups a,b]   worst relative error per quantity, exit 1 on
 //                                    any failure (all groups, or the listed ones)
 //
@@ -42,6 +43,8 @@ namespace {
 std::string g_status;  // status file of the running check group
 int g_disable = 0;     // --disable: flags or-ed into opt.disableflags of every model run
 int g_state_every = kStateEvery;  // --states N: a state every kSteps / N steps
+int g_states_above = -1;          // --states-above NV: --states applies above nv NV only
+int g_max_nv = -1;                // --max-nv NV: the compiled model only above nv NV
 
 void write_status(const std::string& path, const std::string& text) {
   std::string line = text;  // one line: messages may hold newlines
@@ -120,29 +123,32 @@ bool selected(const std::string& only, const std::string& group) {
 
 int record(const char* model, const std::string& dir, bool model_only, const std::string& only) {
   std::string out = dir + "/ref/";
+  // one load, shared with every child: each runs on its own copy of the parent's memory
+  // (an mju_error while loading ends the run with the model's status)
+  std::string load_error;
+  g_status = out + "model.status";
+  mju_user_error = on_error;
+  mju_user_warning = on_warning;
+  mjModel* shared = load(model, load_error);
+  mju_user_error = nullptr;
+  mju_user_warning = nullptr;
   bool ok = isolated(out + "model.status", [&]() -> std::string {
-    std::string e;
-    mjModel* m = load(model, e);
-    if (!m) return e;
+    if (!shared) return load_error;
     Writer w;
-    dump_model(m, w);
+    dump_model(shared, w);
     return saved(w, out + "model.bin");
   }, kSeconds);
-  if (model_only) return ok ? 0 : 1;
-  // the groups below share one load: each child runs on its own copy of the parent's memory
-  // (a model that failed to load above is loaded, and fails, in each child as before)
-  mjModel* shared = nullptr;
-  if (ok) {
-    mju_user_warning = on_warning;
-    std::string e;
-    shared = load(model, e);
-    mju_user_warning = nullptr;
+  if (!shared) {
+    // the groups fail as the load did, without a run each
+    for (const char* g : {"traj", "trajnoise"}) write_status(out + g + ".status", load_error);
+    for (const auto& gc : state_checks()) write_status(out + gc.first + ".status", load_error);
+    write_status(out + "noise.status", load_error);
+    return 1;
   }
-  auto child_model = [&](std::string& e) { return shared ? shared : load(model, e); };
+  if (model_only || (g_max_nv >= 0 && shared->nv > g_max_nv)) return ok ? 0 : 1;
+  if (g_states_above >= 0 && shared->nv <= g_states_above) g_state_every = kStateEvery;
   ok = isolated(out + "traj.status", [&]() -> std::string {
-    std::string e;
-    mjModel* m = child_model(e);
-    if (!m) return e;
+    mjModel* m = shared;
     mjData* d = mj_makeData(m);
     Writer traj, states;
     run_trajectory(m, d, traj, &states, false, g_state_every);
@@ -155,9 +161,7 @@ int record(const char* model, const std::string& dir, bool model_only, const std
   checks.push_back({"noise", check_noise});
   if (selected(only, "traj")) {
     isolated(out + "trajnoise.status", [&]() -> std::string {
-      std::string e;
-      mjModel* m = child_model(e);
-      if (!m) return e;
+      mjModel* m = shared;
       mjData* d = mj_makeData(m);
       Writer traj;
       run_trajectory(m, d, traj, nullptr, true);
@@ -173,9 +177,7 @@ int record(const char* model, const std::string& dir, bool model_only, const std
     if (!have_states) have_states = states.load(dir + "/states.bin");
     if (!have_post && group != "forward") have_post = post.load(out + "forward.bin");
     ok = isolated(out + group + ".status", [&, group = group, check = check]() -> std::string {
-      std::string e;
-      mjModel* m = child_model(e);
-      if (!m) return e;
+      mjModel* m = shared;
       mjData* d = mj_makeData(m);
       if (!have_states) return "no states.bin";
       const Rec* n = states.get("nstate");
@@ -203,6 +205,8 @@ int replay(const char* model, const std::string& dir, bool model_only, const std
   if (model_only) return 0;
   Reader refmodel;
   bool have_ref = refmodel.load(ref + "model.bin");
+  const Rec* nv = have_ref ? refmodel.get("size.nv") : nullptr;
+  if (g_max_nv >= 0 && nv && nv->i()[0] > g_max_nv) return 0;
   // our loader's result decides the trajectory's model (a failing mj_loadXML cannot return)
   bool loads = read_status(out + "model.status") == "ok";
   // our trajectory: compared in the traj group only
@@ -315,7 +319,7 @@ bool right_library() {
 
 int usage() {
   std::fprintf(stderr,
-               "usage: harness record|replay MODEL DIR [--model-only] [--groups g1,g2,...] [--disable FLAGS] [--states N] | "
+               "usage: harness record|replay MODEL DIR [--model-only] [--groups g1,g2,...] [--disable FLAGS] [--states N [--states-above NV]] [--max-nv NV] | "
                "harness compare DIR [-v] [--groups g1,g2,...]\n");
   return 2;
 }
@@ -352,6 +356,8 @@ int main(int argc, char** argv) {
       if (n < 1 || n > kSteps) return usage();
       g_state_every = kSteps / n;
     }
+    else if (!std::strcmp(argv[i], "--states-above") && i + 1 < argc) g_states_above = std::atoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--max-nv") && i + 1 < argc) g_max_nv = std::atoi(argv[++i]);
     else return usage();
   }
   if (mode == "record") return record(argv[2], dir, model_only, only);
