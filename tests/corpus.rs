@@ -37,7 +37,7 @@ enum Physics {
 }
 
 /// One corpus file: its path as reported, the compiled-model comparison (None: the reference
-/// rejects it; else identical, and the comparator's first line) and the physics.
+/// rejects it; else identical, and the comparator's line of the model group) and the physics.
 struct Model {
     rel: String,
     compiled: Option<(bool, String)>,
