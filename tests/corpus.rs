@@ -100,9 +100,7 @@ fn check(bin: &Path, f: &Path, ds: &str, smooth: bool) -> (Option<(bool, String)
         "--max-nv",
         &max_nv,
     ];
-    let g = "model,forward,step,collision";
-    let Some((ok, out)) = harness_run(bin, &fs, ds, &[&["--groups", g], &sized[..]].concat())
-    else {
+    let Some((run, out)) = harness_run(bin, &fs, ds, "model,forward,step,collision", &sized) else {
         return (None, Physics::Skipped); // include files, malformed models
     };
     let line = |group: &str| {
@@ -117,10 +115,10 @@ fn check(bin: &Path, f: &Path, ds: &str, smooth: bool) -> (Option<(bool, String)
     if !compiled.as_ref().is_some_and(|c| c.0) {
         return (compiled, Physics::Unsupported(format!("{rel}: compiler")));
     }
-    if !ok.physics {
+    if !run.physics {
         return (compiled, Physics::Skipped); // the reference stops, or nv above MAX_NV
     }
-    let full = if ok.passed {
+    let full = if run.passed {
         Ok(["forward", "step", "collision"]
             .iter()
             .filter_map(|g| {
@@ -142,14 +140,13 @@ fn check(bin: &Path, f: &Path, ds: &str, smooth: bool) -> (Option<(bool, String)
         Err(format!("{rel}:\n{out}"))
     };
     // smooth dynamics: constraints and contacts off on both sides
-    let g = ["--groups", "forward,jacBody,jacSite"];
-    let smooth_run = [&g[..], &["--disable", "17"], &sized[..]].concat();
+    let smooth_run = [&["--disable", "17"], &sized[..]].concat();
     let smooth = match smooth
-        .then(|| harness_compare(bin, &fs, ds, &smooth_run, &g, 600))
+        .then(|| harness_run(bin, &fs, ds, "forward,jacBody,jacSite", &smooth_run))
         .flatten()
     {
-        Some((true, _)) => Ok(true),
-        Some((false, out)) if !out.contains("not implemented") => {
+        Some((r, _)) if r.physics && r.passed => Ok(true),
+        Some((r, out)) if r.physics && !out.contains("not implemented") => {
             Err(format!("{rel} (constraints and contacts disabled):\n{out}"))
         }
         _ => Ok(false),
@@ -164,11 +161,18 @@ struct Run {
     passed: bool,
 }
 
-/// The harness on one file with `args`: None when the reference rejects the file; else how it
-/// went and the comparator's output (the physics groups compared only when they ran).
-fn harness_run(bin: &Path, model: &str, ds: &str, args: &[&str]) -> Option<(Run, String)> {
+/// The harness on one file: the reference records and ours replays `groups` with `args`, the
+/// reference compares them (only the compiled model when the physics did not run). None when
+/// the reference rejects the file; else how it went and the comparator's output.
+fn harness_run(
+    bin: &Path,
+    model: &str,
+    ds: &str,
+    groups: &str,
+    args: &[&str],
+) -> Option<(Run, String)> {
     let side = |exe: &str, mode: &str| {
-        let a: Vec<&str> = [mode, model, ds]
+        let a: Vec<&str> = [mode, model, ds, "--groups", groups]
             .into_iter()
             .chain(args.iter().copied())
             .collect();
@@ -182,14 +186,10 @@ fn harness_run(bin: &Path, model: &str, ds: &str, args: &[&str]) -> Option<(Run,
     }
     side("harness-ours", "replay");
     let physics = recorded && model_nv(ds) <= MAX_NV;
-    let groups = if physics {
-        args[args.iter().position(|a| *a == "--groups")? + 1]
-    } else {
-        "model"
-    };
+    let compared = if physics { groups } else { "model" };
     let c = run(
         &bin.join("harness-ref"),
-        &["compare", ds, "--groups", groups],
+        &["compare", ds, "--groups", compared],
         &[],
         600,
     );

@@ -291,38 +291,6 @@ pub fn corpus_files() -> Vec<PathBuf> {
     out
 }
 
-/// The harness on one model in `dir`: the reference records, ours replays (with `run_args`,
-/// e.g. `--model-only` or `--groups g`), the reference compares (with `cmp_args`). None when the
-/// reference run fails (files it rejects); else whether the comparison passed, and its output.
-pub fn harness_compare(
-    bin: &Path,
-    model: &str,
-    dir: &str,
-    run_args: &[&str],
-    cmp_args: &[&str],
-    seconds: u32,
-) -> Option<(bool, String)> {
-    let args = |mode: &'static str| -> Vec<&str> {
-        [mode, model, dir]
-            .into_iter()
-            .chain(run_args.iter().copied())
-            .collect()
-    };
-    if !run(&bin.join("harness-ref"), &args("record"), &[], seconds)
-        .status
-        .success()
-    {
-        return None;
-    }
-    run(&bin.join("harness-ours"), &args("replay"), &[], seconds);
-    let cmp: Vec<&str> = ["compare", dir]
-        .into_iter()
-        .chain(cmp_args.iter().copied())
-        .collect();
-    let c = run(&bin.join("harness-ref"), &cmp, &[], seconds);
-    Some((c.status.success(), text(&c.stdout)))
-}
-
 /// Workers for per-model loops: $RUJOCO_TEST_JOBS, else the machine's cores.
 pub fn jobs() -> usize {
     std::env::var("RUJOCO_TEST_JOBS")
