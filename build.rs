@@ -47,6 +47,7 @@ fn main() {
     println!("cargo:rerun-if-changed=src/capi");
     println!("cargo:rerun-if-changed=src/runtime");
     println!("cargo:rerun-if-changed=build.rs");
+    println!("cargo:rerun-if-changed=pgo/rujoco.profdata");
     println!("cargo:rustc-cdylib-link-arg=-Wl,-soname,libmujoco.so.2.2.2");
     qhull();
 

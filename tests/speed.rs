@@ -277,3 +277,39 @@ fn loading_speed() {
     // percent over a few milliseconds; the goal, at least 1.0x, is read from the report)
     assert!(again.first().is_none_or(|a| a.0 > 0.75), "{msg}");
 }
+
+include!("../xtask/src/sources.rs");
+
+/// The release library is built with the recorded profile (pgo/rustc, applied through
+/// .cargo/config.toml); the report says which sources changed since it was recorded (a stale
+/// profile leaves results unchanged and the changed code less optimized: `cargo xtask pgo`).
+#[test]
+fn build_profile() {
+    let pgo = root().join("pgo");
+    let profile = std::fs::metadata(pgo.join("rujoco.profdata")).map_or(0, |m| m.len());
+    assert!(profile > 100_000, "pgo/rujoco.profdata is missing");
+    let config = std::fs::read_to_string(root().join(".cargo/config.toml")).unwrap_or_default();
+    assert!(
+        config.contains("rustc-wrapper = \"pgo/rustc\""),
+        ".cargo/config.toml does not apply the profile"
+    );
+    let recorded = std::fs::read_to_string(pgo.join("sources.txt")).unwrap_or_default();
+    let known: std::collections::HashSet<&str> = recorded.lines().collect();
+    let now = source_digests(&root());
+    let changed: Vec<&str> = now
+        .lines()
+        .filter(|l| !known.contains(l))
+        .filter_map(|l| l.split_once(' ').map(|(_, p)| p))
+        .collect();
+    let mut body = format!(
+        "build profile: pgo/rujoco.profdata ({profile} bytes); {} of {} source files changed \
+         since it was recorded\n",
+        changed.len(),
+        now.lines().count()
+    );
+    for p in &changed {
+        body.push_str(&format!("  changed: {p}\n"));
+    }
+    assert!(!recorded.is_empty(), "pgo/sources.txt is missing");
+    report("build-profile", &body);
+}

@@ -140,17 +140,18 @@ fn load_stl(spec: &MeshSpec, file: &str, raw: &mut Raw) -> Result<(), String> {
 /// Merges bit-identical vertices, keeping the first of each run in 2.2.2's sort order.
 fn remove_repeated(vert: &mut Vec<f32>, face: &mut [i32]) {
     let n = vert.len() / 3;
-    let key = |i: usize| {
-        let v = |k: usize| vert[3 * i + k] as f64;
-        (v(0) + 1e-2 * v(1) + 1e-4 * v(2)) as f32
-    };
+    let key: Vec<f32> = vert
+        .chunks_exact(3)
+        .map(|v| (v[0] as f64 + 1e-2 * v[1] as f64 + 1e-4 * v[2] as f64) as f32)
+        .collect();
     let mut index: Vec<usize> = (0..n).collect();
     // glibc's qsort is a stable merge sort here
     index.sort_by(|&a, &b| {
-        key(a)
-            .partial_cmp(&key(b))
+        key[a]
+            .partial_cmp(&key[b])
             .unwrap_or(std::cmp::Ordering::Equal)
     });
+    drop(key);
     let mut redirect: Vec<usize> = (0..n).collect();
     let mut repeated = 0;
     for i in 1..n {

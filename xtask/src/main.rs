@@ -7,10 +7,13 @@
 //! - `uninstall --prefix DIR [--libdir lib]`: removes exactly what `install` wrote.
 //! - `deb`: a Debian package in target/debian/ that stands in for libmujoco2.2.2 and
 //!   libmujoco-dev.
+//! - `pgo`: records the profile the release build is optimized with (`pgo/rujoco.profdata`).
 //!
 //! `--no-build` takes target/release as it is (the tests use it).
 
 mod files;
+mod pgo;
+mod sources;
 
 use std::path::{Path, PathBuf};
 use std::process::{exit, Command};
@@ -22,7 +25,8 @@ fn usage() -> ! {
     eprintln!(
         "usage: cargo xtask install --prefix DIR [--libdir DIR] [--no-build]\n       \
          cargo xtask uninstall --prefix DIR [--libdir DIR]\n       \
-         cargo xtask deb [--no-build]"
+         cargo xtask deb [--no-build]\n       \
+         cargo xtask pgo"
     );
     exit(2)
 }
@@ -234,6 +238,7 @@ fn main() {
         Some("uninstall") => uninstall(&Layout::parse(&args[1..])),
         Some("deb") if args.len() == 1 => deb(false),
         Some("deb") if args.len() == 2 && args[1] == "--no-build" => deb(true),
+        Some("pgo") if args.len() == 1 => pgo::pgo(),
         _ => usage(),
     }
 }

@@ -1,0 +1,92 @@
+// The workload rujoco's build profile is recorded on (cargo xtask pgo): for each model file
+// given, what programs do with a model, in proportions like theirs. Loads it (XML, then through
+// an MJB round trip), steps it with driven controls (full physics, then with constraints and
+// contacts disabled), and calls mj_forward, mj_inverse, site Jacobians, rays from each camera and
+// mjv_updateScene. Prints nothing; a model the library rejects is skipped. One process per file:
+// the instrumented library writes its counts when the process exits.
+//   pgo_train STEPS FILE
+#include <math.h>
+#include <mujoco/mujoco.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static void quiet(const char* msg) { (void)msg; }
+
+static void drive(const mjModel* m, mjData* d, int steps, int disable) {
+  mjModel* mm = (mjModel*)m;
+  int saved = mm->opt.disableflags;
+  mm->opt.disableflags |= disable;
+  if (m->nkey) {
+    mj_resetDataKeyframe(m, d, 0);
+  } else {
+    mj_resetData(m, d);
+  }
+  for (int i = 0; i < steps; i++) {
+    for (int u = 0; u < m->nu; u++) d->ctrl[u] = 0.5 * sin(0.01 * i + u);
+    mj_step(m, d);
+  }
+  mm->opt.disableflags = saved;
+}
+
+static void queries(const mjModel* m, mjData* d, mjvScene* scn) {
+  mj_forward(m, d);
+  mj_inverse(m, d);
+  mjtNum* jacp = malloc(sizeof(mjtNum) * 3 * (m->nv ? m->nv : 1));
+  mjtNum* jacr = malloc(sizeof(mjtNum) * 3 * (m->nv ? m->nv : 1));
+  for (int s = 0; s < m->nsite; s++) mj_jacSite(m, d, jacp, jacr, s);
+  for (int b = 0; b < m->nbody; b++) mj_jacBodyCom(m, d, jacp, NULL, b);
+  free(jacp);
+  free(jacr);
+  for (int c = 0; c < m->ncam; c++) {
+    mjtNum dir[3] = {-d->cam_xmat[9 * c + 2], -d->cam_xmat[9 * c + 5], -d->cam_xmat[9 * c + 8]};
+    int geom = -1;
+    mj_ray(m, d, d->cam_xpos + 3 * c, dir, NULL, 1, -1, &geom);
+  }
+  mjvOption opt;
+  mjvCamera cam;
+  mjvPerturb pert;
+  mjv_defaultOption(&opt);
+  mjv_defaultCamera(&cam);
+  mjv_defaultPerturb(&pert);
+  mjv_updateScene(m, d, &opt, &pert, &cam, mjCAT_ALL, scn);
+}
+
+static void train(const char* file, int steps) {
+  char err[1000];
+  mjModel* m = mj_loadXML(file, NULL, err, sizeof err);
+  if (!m) return;
+  int size = mj_sizeModel(m);
+  void* buf = malloc(size);
+  mj_saveModel(m, NULL, buf, size);
+  mj_deleteModel(m);
+  mjVFS vfs;
+  mj_defaultVFS(&vfs);
+  mj_makeEmptyFileVFS(&vfs, "model.mjb", size);
+  memcpy(vfs.filedata[0], buf, size);
+  free(buf);
+  m = mj_loadModel("model.mjb", &vfs);
+  mj_deleteVFS(&vfs);
+  if (!m) return;
+  mjData* d = mj_makeData(m);
+  mjvScene scn;
+  mjv_defaultScene(&scn);
+  mjv_makeScene(m, &scn, 2000);
+  drive(m, d, steps, 0);
+  queries(m, d, &scn);
+  drive(m, d, steps / 2, mjDSBL_CONSTRAINT | mjDSBL_CONTACT);
+  queries(m, d, &scn);
+  mjv_freeScene(&scn);
+  mj_deleteData(d);
+  mj_deleteModel(m);
+}
+
+int main(int argc, char** argv) {
+  if (argc != 3) {
+    fprintf(stderr, "usage: pgo_train STEPS FILE\n");
+    return 2;
+  }
+  mju_user_warning = quiet;
+  train(argv[2], atoi(argv[1]));
+  return 0;
+}

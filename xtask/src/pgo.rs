@@ -1,0 +1,178 @@
+//! `cargo xtask pgo`: records the profile the release build is optimized with
+//! (`pgo/rujoco.profdata`, applied by `pgo/rustc` through `.cargo/config.toml`).
+//!
+//! Builds an instrumented library into target/pgo, runs `capi-tests/pgo_train.c` on it once per
+//! model file (ours under models/, and the corpus when present: `RUJOCO_CORPUS`, else
+//! ../shared/corpus), merges the counts with the toolchain's llvm-profdata (`rustup component
+//! add llvm-tools`) and lists the sources the profile belongs to in pgo/sources.txt. Only rujoco
+//! runs: no other library is involved. target/release is cleaned afterwards: cargo does not see
+//! a new profile by itself.
+
+use std::path::{Path, PathBuf};
+use std::process::{exit, Command, Stdio};
+use std::time::{Duration, Instant};
+
+use crate::sources::source_digests;
+use crate::{fail, root, target_dir};
+
+/// Driven steps of full physics per model (and half as many smooth).
+const STEPS: &str = "400";
+/// A model's run is stopped after this long.
+const LIMIT: Duration = Duration::from_secs(60);
+
+pub fn pgo() {
+    let root = root();
+    let work = target_dir().join("pgo");
+    let raw = work.join("raw");
+    let profdata = llvm_profdata();
+
+    // the instrumented library (RUSTFLAGS replaces the profile-use flags of the config)
+    let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
+    let built = Command::new(cargo)
+        .args(["build", "--release", "--package", "rujoco", "--lib"])
+        .env("RUSTFLAGS", format!("-Cprofile-generate={}", raw.display()))
+        .env("CARGO_TARGET_DIR", &work)
+        .current_dir(&root)
+        .status()
+        .is_ok_and(|s| s.success());
+    if !built {
+        eprintln!("xtask: the instrumented build failed");
+        exit(1);
+    }
+    // counts of the build's own programs (build scripts) are not the library's
+    let _ = std::fs::remove_dir_all(&raw);
+    std::fs::create_dir_all(&raw).unwrap_or_else(|e| fail("target/pgo/raw", e));
+    let lib = work.join("release");
+    let train = work.join("pgo_train");
+    let compiled = Command::new("cc")
+        .args(["-std=c11", "-O2", "-I"])
+        .arg(root.join("include"))
+        .arg(root.join("capi-tests/pgo_train.c"))
+        .arg("-o")
+        .arg(&train)
+        .arg(lib.join("libmujoco.so"))
+        .arg(format!("-Wl,-rpath,{}", lib.display()))
+        .arg("-lm")
+        .status()
+        .is_ok_and(|s| s.success());
+    if !compiled {
+        eprintln!("xtask: compiling capi-tests/pgo_train.c failed");
+        exit(1);
+    }
+
+    // the sources the profile belongs to, read before the run (tests/speed.rs compares)
+    let digests = source_digests(&root);
+    let models = models(&root);
+    let start = Instant::now();
+    let mut stopped = 0;
+    for m in &models {
+        if !run_limited(Command::new(&train).arg(STEPS).arg(m)) {
+            stopped += 1;
+        }
+    }
+    println!(
+        "xtask: {} model files run in {:.0} s ({} stopped after {} s)",
+        models.len(),
+        start.elapsed().as_secs_f64(),
+        stopped,
+        LIMIT.as_secs()
+    );
+
+    let out = root.join("pgo/rujoco.profdata");
+    std::fs::create_dir_all(out.parent().unwrap()).unwrap_or_else(|e| fail("pgo", e));
+    let merged = Command::new(&profdata)
+        .arg("merge")
+        .arg("-o")
+        .arg(&out)
+        .arg(&raw)
+        .status()
+        .is_ok_and(|s| s.success());
+    if !merged {
+        eprintln!("xtask: llvm-profdata merge failed");
+        exit(1);
+    }
+    std::fs::write(root.join("pgo/sources.txt"), digests)
+        .unwrap_or_else(|e| fail("pgo/sources.txt", e));
+    println!("{}", out.display());
+    // the crates built on the old profile are rebuilt on the new one (cargo does not track it)
+    let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
+    let _ = Command::new(cargo)
+        .args(["clean", "--release"])
+        .current_dir(&root)
+        .status();
+}
+
+/// The toolchain's own llvm-profdata: the raw format follows rustc's LLVM.
+fn llvm_profdata() -> PathBuf {
+    let rustc = std::env::var("RUSTC").unwrap_or_else(|_| "rustc".into());
+    let text = |args: &[&str]| {
+        Command::new(&rustc)
+            .args(args)
+            .output()
+            .ok()
+            .map(|o| String::from_utf8_lossy(&o.stdout).trim().to_string())
+            .unwrap_or_default()
+    };
+    let sysroot = text(&["--print", "sysroot"]);
+    let host = text(&["-vV"])
+        .lines()
+        .find_map(|l| l.strip_prefix("host: ").map(str::to_string))
+        .unwrap_or_default();
+    let tool = Path::new(&sysroot).join(format!("lib/rustlib/{host}/bin/llvm-profdata"));
+    if !tool.is_file() {
+        eprintln!(
+            "xtask: {} is missing: rustup component add llvm-tools",
+            tool.display()
+        );
+        exit(1);
+    }
+    tool
+}
+
+/// The MJCF files the profile is recorded on, sorted.
+fn models(root: &Path) -> Vec<PathBuf> {
+    let corpus: Vec<PathBuf> = match std::env::var_os("RUJOCO_CORPUS") {
+        Some(v) => std::env::split_paths(&v).collect(),
+        None => vec![root.join("../shared/corpus")],
+    };
+    let mut files = Vec::new();
+    for dir in std::iter::once(root.join("models")).chain(corpus) {
+        xml_files(&dir, &mut files);
+    }
+    files.sort();
+    files.dedup();
+    files
+}
+
+fn xml_files(dir: &Path, out: &mut Vec<PathBuf>) {
+    let Ok(entries) = std::fs::read_dir(dir) else {
+        return;
+    };
+    for e in entries.flatten() {
+        let p = e.path();
+        if p.is_dir() {
+            xml_files(&p, out);
+        } else if p.extension().is_some_and(|x| x == "xml") {
+            out.push(p);
+        }
+    }
+}
+
+/// Runs `cmd` quietly; false when it was stopped at the limit.
+fn run_limited(cmd: &mut Command) -> bool {
+    let Ok(mut child) = cmd.stdout(Stdio::null()).stderr(Stdio::null()).spawn() else {
+        return false;
+    };
+    let start = Instant::now();
+    loop {
+        if let Ok(Some(_)) = child.try_wait() {
+            return true;
+        }
+        if start.elapsed() > LIMIT {
+            let _ = child.kill();
+            let _ = child.wait();
+            return false;
+        }
+        std::thread::sleep(Duration::from_millis(5));
+    }
+}
