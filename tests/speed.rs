@@ -281,7 +281,7 @@ fn loading_speed() {
 include!("../xtask/src/sources.rs");
 
 /// The release library is built with the recorded profile (pgo/rustc, applied through
-/// .cargo/config.toml); the report says which sources changed since it was recorded (a stale
+/// .cargo/config.toml, to opt-level-3 builds only); the report says which sources changed since it was recorded (a stale
 /// profile leaves results unchanged and the changed code less optimized: `cargo xtask pgo`).
 #[test]
 fn build_profile() {
@@ -293,6 +293,19 @@ fn build_profile() {
         config.contains("rustc-wrapper = \"pgo/rustc\""),
         ".cargo/config.toml does not apply the profile"
     );
+    // the wrapper adds the profile to optimized builds only, by its absolute path
+    let wrapper = |extra: &[&str]| {
+        let o = std::process::Command::new(pgo.join("rustc"))
+            .args(["echo", "--crate-name", "mujoco"])
+            .args(extra)
+            .output()
+            .expect("pgo/rustc");
+        text(&o.stdout)
+    };
+    let flag = format!("-Cprofile-use={}", pgo.join("rujoco.profdata").display());
+    assert!(wrapper(&["-C", "opt-level=3"]).contains(&flag), "{flag}");
+    assert!(!wrapper(&["-C", "opt-level=1"]).contains("profile-use"));
+    assert!(!wrapper(&["-C", "opt-level=3", "-Cprofile-generate=/x"]).contains("profile-use"));
     let recorded = std::fs::read_to_string(pgo.join("sources.txt")).unwrap_or_default();
     let known: std::collections::HashSet<&str> = recorded.lines().collect();
     let now = source_digests(&root());
