@@ -293,19 +293,40 @@ fn build_profile() {
         config.contains("rustc-wrapper = \"pgo/rustc\""),
         ".cargo/config.toml does not apply the profile"
     );
-    // the wrapper adds the profile to optimized builds only, by its absolute path
-    let wrapper = |extra: &[&str]| {
+    // the wrapper adds the profile, by its absolute path, to optimized builds whose LLVM can
+    // read it; a stand-in rustc reports an LLVM version and prints the arguments it gets
+    let recorded_llvm: u32 = std::fs::read_to_string(pgo.join("llvm-major"))
+        .ok()
+        .and_then(|t| t.trim().parse().ok())
+        .expect("pgo/llvm-major");
+    let fake = target_dir().join("capi-tests/fake-rustc");
+    std::fs::create_dir_all(fake.parent().unwrap()).unwrap();
+    std::fs::write(
+        &fake,
+        "#!/bin/sh\nif [ \"$1\" = -vV ]; then echo \"LLVM version: $FAKE_LLVM.1.0\"; \
+         else echo \"$@\"; fi\n",
+    )
+    .unwrap();
+    use std::os::unix::fs::PermissionsExt;
+    std::fs::set_permissions(&fake, std::fs::Permissions::from_mode(0o755)).unwrap();
+    let wrapper = |llvm: u32, extra: &[&str]| {
         let o = std::process::Command::new(pgo.join("rustc"))
-            .args(["echo", "--crate-name", "mujoco"])
+            .arg(&fake)
+            .args(["--crate-name", "mujoco"])
             .args(extra)
+            .env("FAKE_LLVM", llvm.to_string())
             .output()
             .expect("pgo/rustc");
         text(&o.stdout)
     };
     let flag = format!("-Cprofile-use={}", pgo.join("rujoco.profdata").display());
-    assert!(wrapper(&["-C", "opt-level=3"]).contains(&flag), "{flag}");
-    assert!(!wrapper(&["-C", "opt-level=1"]).contains("profile-use"));
-    assert!(!wrapper(&["-C", "opt-level=3", "-Cprofile-generate=/x"]).contains("profile-use"));
+    let o3 = ["-C", "opt-level=3"];
+    assert!(wrapper(recorded_llvm, &o3).contains(&flag), "{flag}");
+    assert!(wrapper(recorded_llvm + 1, &o3).contains(&flag), "{flag}");
+    assert!(!wrapper(recorded_llvm - 1, &o3).contains("profile-use"));
+    assert!(!wrapper(recorded_llvm, &["-C", "opt-level=1"]).contains("profile-use"));
+    let generate = ["-C", "opt-level=3", "-Cprofile-generate=/x"];
+    assert!(!wrapper(recorded_llvm, &generate).contains("profile-use"));
     let recorded = std::fs::read_to_string(pgo.join("sources.txt")).unwrap_or_default();
     let known: std::collections::HashSet<&str> = recorded.lines().collect();
     let now = source_digests(&root());

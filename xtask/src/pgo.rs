@@ -4,7 +4,8 @@
 //! Builds an instrumented library into target/pgo, runs `capi-tests/pgo_train.c` on it once per
 //! model file (ours under models/, and the corpus when present: `RUJOCO_CORPUS`, else
 //! ../shared/corpus), merges the counts with the toolchain's llvm-profdata (`rustup component
-//! add llvm-tools`) and lists the sources the profile belongs to in pgo/sources.txt. Only rujoco
+//! add llvm-tools`), lists the sources the profile belongs to in pgo/sources.txt and that
+//! LLVM's major version in pgo/llvm-major (pgo/rustc uses the profile from it on). Only rujoco
 //! runs: no other library is involved. target/release is cleaned afterwards: cargo does not see
 //! a new profile by itself.
 
@@ -24,7 +25,7 @@ pub fn pgo() {
     let root = root();
     let work = target_dir().join("pgo");
     let raw = work.join("raw");
-    let profdata = llvm_profdata();
+    let (profdata, llvm_major) = llvm_profdata();
 
     // the instrumented library (RUSTFLAGS replaces the profile-use flags of the config)
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
@@ -93,6 +94,9 @@ pub fn pgo() {
     }
     std::fs::write(root.join("pgo/sources.txt"), digests)
         .unwrap_or_else(|e| fail("pgo/sources.txt", e));
+    // an older LLVM cannot read the profile: pgo/rustc leaves it out there
+    std::fs::write(root.join("pgo/llvm-major"), format!("{llvm_major}\n"))
+        .unwrap_or_else(|e| fail("pgo/llvm-major", e));
     println!("{}", out.display());
     // the crates built on the old profile are rebuilt on the new one (cargo does not track it)
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
@@ -102,8 +106,9 @@ pub fn pgo() {
         .status();
 }
 
-/// The toolchain's own llvm-profdata: the raw format follows rustc's LLVM.
-fn llvm_profdata() -> PathBuf {
+/// The toolchain's own llvm-profdata (the raw format follows rustc's LLVM) and the major
+/// version of that LLVM.
+fn llvm_profdata() -> (PathBuf, String) {
     let rustc = std::env::var("RUSTC").unwrap_or_else(|_| "rustc".into());
     let text = |args: &[&str]| {
         Command::new(&rustc)
@@ -114,10 +119,16 @@ fn llvm_profdata() -> PathBuf {
             .unwrap_or_default()
     };
     let sysroot = text(&["--print", "sysroot"]);
-    let host = text(&["-vV"])
-        .lines()
-        .find_map(|l| l.strip_prefix("host: ").map(str::to_string))
-        .unwrap_or_default();
+    let version = text(&["-vV"]);
+    let field = |name: &str| {
+        version
+            .lines()
+            .find_map(|l| l.strip_prefix(name).map(str::to_string))
+            .unwrap_or_default()
+    };
+    let host = field("host: ");
+    let llvm = field("LLVM version: ");
+    let major = llvm.split('.').next().unwrap_or_default().to_string();
     let tool = Path::new(&sysroot).join(format!("lib/rustlib/{host}/bin/llvm-profdata"));
     if !tool.is_file() {
         eprintln!(
@@ -126,7 +137,11 @@ fn llvm_profdata() -> PathBuf {
         );
         exit(1);
     }
-    tool
+    if major.parse::<u32>().is_err() {
+        eprintln!("xtask: rustc -vV gives no LLVM version");
+        exit(1);
+    }
+    (tool, major)
 }
 
 /// The MJCF files the profile is recorded on, sorted.
