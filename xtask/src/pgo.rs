@@ -27,7 +27,7 @@ pub fn pgo() {
     let raw = work.join("raw");
     let (profdata, llvm_major) = llvm_profdata();
 
-    // the instrumented library (RUSTFLAGS replaces the profile-use flags of the config)
+    // the instrumented library (pgo/rustc adds no profile next to -Cprofile-generate)
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
     let built = Command::new(cargo)
         .args(["build", "--release", "--package", "rujoco", "--lib"])
