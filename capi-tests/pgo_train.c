@@ -13,10 +13,9 @@
 
 static void quiet(const char* msg) { (void)msg; }
 
-static void drive(const mjModel* m, mjData* d, int steps, int disable) {
-  mjModel* mm = (mjModel*)m;
-  int saved = mm->opt.disableflags;
-  mm->opt.disableflags |= disable;
+static void drive(mjModel* m, mjData* d, int steps, int disable) {
+  int saved = m->opt.disableflags;
+  m->opt.disableflags |= disable;
   if (m->nkey) {
     mj_resetDataKeyframe(m, d, 0);
   } else {
@@ -26,7 +25,7 @@ static void drive(const mjModel* m, mjData* d, int steps, int disable) {
     for (int u = 0; u < m->nu; u++) d->ctrl[u] = 0.5 * sin(0.01 * i + u);
     mj_step(m, d);
   }
-  mm->opt.disableflags = saved;
+  m->opt.disableflags = saved;
 }
 
 static void queries(const mjModel* m, mjData* d, mjvScene* scn) {

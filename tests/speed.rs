@@ -281,8 +281,9 @@ fn loading_speed() {
 include!("../xtask/src/sources.rs");
 
 /// The release library is built with the recorded profile (pgo/rustc, applied through
-/// .cargo/config.toml, to opt-level-3 builds only); the report says which sources changed since it was recorded (a stale
-/// profile leaves results unchanged and the changed code less optimized: `cargo xtask pgo`).
+/// .cargo/config.toml, to opt-level-3 builds only); the report says which sources changed since
+/// it was recorded (a stale profile leaves results unchanged and the changed code less
+/// optimized: `cargo xtask pgo`).
 #[test]
 fn build_profile() {
     let pgo = root().join("pgo");
@@ -328,6 +329,7 @@ fn build_profile() {
     let generate = ["-C", "opt-level=3", "-Cprofile-generate=/x"];
     assert!(!wrapper(recorded_llvm, &generate).contains("profile-use"));
     let recorded = std::fs::read_to_string(pgo.join("sources.txt")).unwrap_or_default();
+    assert!(!recorded.is_empty(), "pgo/sources.txt is missing");
     let known: std::collections::HashSet<&str> = recorded.lines().collect();
     let now = source_digests(&root());
     let changed: Vec<&str> = now
@@ -344,6 +346,5 @@ fn build_profile() {
     for p in &changed {
         body.push_str(&format!("  changed: {p}\n"));
     }
-    assert!(!recorded.is_empty(), "pgo/sources.txt is missing");
     report("build-profile", &body);
 }

@@ -94,18 +94,26 @@ fn target_dir() -> PathBuf {
         .unwrap_or_else(|| root().join("target"))
 }
 
-fn build() {
-    let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
-    let ok = Command::new(cargo)
-        .args(["build", "--release", "--package", "rujoco", "--lib"])
-        .current_dir(root())
-        .status()
-        .map(|s| s.success())
-        .unwrap_or(false);
-    if !ok {
-        eprintln!("xtask: cargo build --release failed");
+/// The cargo that runs this task.
+fn cargo() -> Command {
+    Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()))
+}
+
+/// Runs `cmd`; exits with "xtask: `what` failed" unless it succeeds.
+fn must(cmd: &mut Command, what: &str) {
+    if !cmd.status().is_ok_and(|s| s.success()) {
+        eprintln!("xtask: {what} failed");
         exit(1);
     }
+}
+
+fn build() {
+    must(
+        cargo()
+            .args(["build", "--release", "--package", "rujoco", "--lib"])
+            .current_dir(root()),
+        "cargo build --release",
+    );
 }
 
 fn fail(what: &str, e: std::io::Error) -> ! {

@@ -14,7 +14,7 @@ use std::process::{exit, Command, Stdio};
 use std::time::{Duration, Instant};
 
 use crate::sources::source_digests;
-use crate::{fail, root, target_dir};
+use crate::{cargo, fail, must, root, target_dir};
 
 /// Driven steps of full physics per model (and half as many smooth).
 const STEPS: &str = "400";
@@ -28,38 +28,31 @@ pub fn pgo() {
     let (profdata, llvm_major) = llvm_profdata();
 
     // the instrumented library (pgo/rustc adds no profile next to -Cprofile-generate)
-    let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
-    let built = Command::new(cargo)
-        .args(["build", "--release", "--package", "rujoco", "--lib"])
-        .env("RUSTFLAGS", format!("-Cprofile-generate={}", raw.display()))
-        .env("CARGO_TARGET_DIR", &work)
-        .current_dir(&root)
-        .status()
-        .is_ok_and(|s| s.success());
-    if !built {
-        eprintln!("xtask: the instrumented build failed");
-        exit(1);
-    }
+    must(
+        cargo()
+            .args(["build", "--release", "--package", "rujoco", "--lib"])
+            .env("RUSTFLAGS", format!("-Cprofile-generate={}", raw.display()))
+            .env("CARGO_TARGET_DIR", &work)
+            .current_dir(&root),
+        "the instrumented build",
+    );
     // counts of the build's own programs (build scripts) are not the library's
     let _ = std::fs::remove_dir_all(&raw);
     std::fs::create_dir_all(&raw).unwrap_or_else(|e| fail("target/pgo/raw", e));
     let lib = work.join("release");
     let train = work.join("pgo_train");
-    let compiled = Command::new("cc")
-        .args(["-std=c11", "-O2", "-I"])
-        .arg(root.join("include"))
-        .arg(root.join("capi-tests/pgo_train.c"))
-        .arg("-o")
-        .arg(&train)
-        .arg(lib.join("libmujoco.so"))
-        .arg(format!("-Wl,-rpath,{}", lib.display()))
-        .arg("-lm")
-        .status()
-        .is_ok_and(|s| s.success());
-    if !compiled {
-        eprintln!("xtask: compiling capi-tests/pgo_train.c failed");
-        exit(1);
-    }
+    must(
+        Command::new("cc")
+            .args(["-std=c11", "-O2", "-I"])
+            .arg(root.join("include"))
+            .arg(root.join("capi-tests/pgo_train.c"))
+            .arg("-o")
+            .arg(&train)
+            .arg(lib.join("libmujoco.so"))
+            .arg(format!("-Wl,-rpath,{}", lib.display()))
+            .arg("-lm"),
+        "compiling capi-tests/pgo_train.c",
+    );
 
     // the sources the profile belongs to, read before the run (tests/speed.rs compares)
     let digests = source_digests(&root);
@@ -81,17 +74,14 @@ pub fn pgo() {
 
     let out = root.join("pgo/rujoco.profdata");
     std::fs::create_dir_all(out.parent().unwrap()).unwrap_or_else(|e| fail("pgo", e));
-    let merged = Command::new(&profdata)
-        .arg("merge")
-        .arg("-o")
-        .arg(&out)
-        .arg(&raw)
-        .status()
-        .is_ok_and(|s| s.success());
-    if !merged {
-        eprintln!("xtask: llvm-profdata merge failed");
-        exit(1);
-    }
+    must(
+        Command::new(&profdata)
+            .arg("merge")
+            .arg("-o")
+            .arg(&out)
+            .arg(&raw),
+        "llvm-profdata merge",
+    );
     std::fs::write(root.join("pgo/sources.txt"), digests)
         .unwrap_or_else(|e| fail("pgo/sources.txt", e));
     // an older LLVM cannot read the profile: pgo/rustc leaves it out there
@@ -99,8 +89,7 @@ pub fn pgo() {
         .unwrap_or_else(|e| fail("pgo/llvm-major", e));
     println!("{}", out.display());
     // the crates built on the old profile are rebuilt on the new one (cargo does not track it)
-    let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
-    let _ = Command::new(cargo)
+    let _ = cargo()
         .args(["clean", "--release"])
         .current_dir(&root)
         .status();
