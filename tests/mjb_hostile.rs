@@ -211,3 +211,41 @@ fn activation_count_changed_is_refused_at_load() {
     }
     assert!(checked >= 8, "only {checked} cases");
 }
+
+/// Dofs out of depth-first order (a subtree that is not a run of dofs, which the compiler
+/// never makes and the factorization relies on): refused at load with the field named.
+#[test]
+fn dofs_out_of_depth_first_order_refused() {
+    let prog = program(Lib::Ours);
+    let dir = work_dir("mjb_hostile_dof_order");
+    let xml = dir.join("tree.xml");
+    std::fs::write(
+        &xml,
+        r#"<mujoco><worldbody>
+  <body name="a"><joint axis="0 1 0"/><geom size=".1"/>
+    <body name="c" pos="0 0 -.3"><joint axis="0 1 0"/><geom size=".1"/></body></body>
+  <body name="b" pos="1 0 0"><joint axis="0 1 0"/><geom size=".1"/></body>
+</worldbody></mujoco>"#,
+    )
+    .unwrap();
+    let mjb = dir.join("tree.mjb");
+    let (xs, ms) = (xml.to_string_lossy(), mjb.to_string_lossy());
+    assert!(run(&prog, &["save", &xs, &ms], &[], 60).status.success());
+    let ints = |v: [i32; 6]| v.iter().flat_map(|x| x.to_ne_bytes()).collect::<Vec<u8>>();
+    // dof_parentid and dof_Madr, adjacent in the file: a, c (child of a), b; then a, b, c
+    let (depth_first, reordered) = (ints([-1, 0, -1, 0, 1, 3]), ints([-1, -1, 0, 0, 1, 2]));
+    let mut bytes = std::fs::read(&mjb).unwrap();
+    let at = bytes
+        .windows(depth_first.len())
+        .position(|w| w == depth_first)
+        .expect("dof_parentid and dof_Madr in the MJB");
+    let out = text(&run(&prog, &["step", &ms], &[], 60).stdout);
+    assert!(!out.starts_with("reject"), "the model as saved: {out}");
+    bytes[at..at + reordered.len()].copy_from_slice(&reordered);
+    std::fs::write(&mjb, &bytes).unwrap();
+    let out = text(&run(&prog, &["step", &ms], &[], 60).stdout);
+    assert_eq!(
+        out.trim(),
+        "reject Invalid model: dof_parentid not in depth-first order."
+    );
+}

@@ -179,6 +179,12 @@ fn tree(mv: &Model) -> Result<(), String> {
         if p >= i as i32 {
             return Err(bad("dof_parentid not before the dof"));
         }
+        // depth-first: a dof's parent is the dof before it or one of that dof's ancestors
+        // (each subtree a run of dofs, as the compiler numbers them; the factorization's
+        // pull relies on it)
+        if p >= 0 && !ancestor_or_self(mv, p as usize, i - 1) {
+            return Err(bad("dof_parentid not in depth-first order"));
+        }
         let depth = if p < 0 {
             1
         } else {
@@ -201,6 +207,17 @@ fn tree(mv: &Model) -> Result<(), String> {
         return Err(bad("nM inconsistent with dof_parentid"));
     }
     Ok(())
+}
+
+/// Is dof `a` dof `i` or one of its ancestors? (Parents come first, so this ends.)
+fn ancestor_or_self(mv: &Model, a: usize, mut i: usize) -> bool {
+    while i > a {
+        match mv.dof_parentid()[i] {
+            p if p < 0 => return false,
+            p => i = p as usize,
+        }
+    }
+    i == a
 }
 
 /// Number of ancestors of dof `i`, itself included (the parents come first, so this ends).

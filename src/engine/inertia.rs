@@ -43,7 +43,18 @@ pub fn crb(m: &Model, d: &mut Data, skipsimple: bool) {
     }
 }
 
+/// Trees where each row pulls its updates (see `factor_i`): at least this many dofs, and
+/// at least `PULL_DEPTH` ancestors a dof on average (humanoid_CMU, dog: about half off the
+/// factorization). Where rows are shorter (humanoid, nine a dof; rodent, ten) pulling gains
+/// nothing, and in small trees the push is faster.
+const PULL_MIN_NV: usize = 20;
+const PULL_DEPTH: usize = 12;
+
 /// Sparse L'*D*L factorization of an inertia-like matrix (mj_factorI).
+///
+/// 2.2.2 pushes each row k, from the last, into the rows of its ancestors i:
+/// `M(i,:) -= M(k,:) * (M(k,i) / M(k,k))`. In deep trees each row i pulls those same updates
+/// instead, in the same order (k descending), into registers (`pull`).
 pub fn factor_i(
     m: &Model,
     raw: &mut mjData,
@@ -56,13 +67,17 @@ pub fn factor_i(
     let (madr, simple, parent) = (m.dof_Madr(), m.dof_simplenum(), m.dof_parentid());
     let nm = qld.len();
     qld.copy_from_slice(&mat[..nm]);
+    let pulls = nv >= PULL_MIN_NV && nm >= PULL_DEPTH * nv;
     for k in (0..nv).rev() {
         let akk = madr[k] as usize;
+        if pulls {
+            pull(qld, madr, simple, k, &mut diag_inv[..nv]);
+        }
         if qld[akk] < MINVAL {
             warning(raw, mjtWarning_::mjWARN_INERTIA as i32, k as i32)?;
             qld[akk] = MINVAL;
         }
-        if simple[k] != 0 {
+        if pulls || simple[k] != 0 {
             continue;
         }
         // row k: its diagonal, then one entry per ancestor; each ancestor's own row is the
@@ -95,6 +110,101 @@ pub fn factor_i(
         }
     }
     Ok(())
+}
+
+/// Completes row i with the updates of its non-simple descendants k, the last first, in
+/// blocks of up to 8 columns held in registers. Its descendants are the dofs after it with
+/// longer rows, up to the first that is not (dofs lie in depth-first order, which
+/// `abi::consistency` requires of a loaded model), found through the ends of its children's
+/// subtrees: `ends` (factor_i's diag_inv, until the inverses replace them) keeps each row's end
+/// for its parent's search. i's column and those of its ancestors are the last entries of
+/// each such row. The quotient M(k,i)/M(k,k) is taken where first used and
+/// stored in place of M(k,i), which no later row reads.
+fn pull(qld: &mut [f64], madr: &[i32], simple: &[i32], i: usize, ends: &mut [f64]) {
+    let (nv, nm) = (ends.len(), qld.len());
+    let start = |k: usize| madr.get(k).map_or(nm, |&a| a as usize);
+    let len = start(i + 1) - start(i);
+    // past the subtrees of i's children, found by their ends (each greater than its dof)
+    let mut end = i + 1;
+    while end < nv && start(end + 1) - start(end) > len {
+        end = ends[end] as usize;
+    }
+    ends[i] = end as f64;
+    // a simple dof whose run of simple dofs holds all its descendants gets no update
+    if simple[i] > 0 && i + simple[i] as usize >= end {
+        return;
+    }
+    let e = start(end);
+    let rows = Desc {
+        madr,
+        simple,
+        row: (start(i), len),
+        desc: (i + 1, end, e),
+    };
+    let mut col = 0;
+    while col < len {
+        col += match col {
+            0 => rows.block::<true>(qld, col),
+            _ => rows.block::<false>(qld, col),
+        };
+    }
+}
+
+/// A row to complete and its descendants.
+struct Desc<'a> {
+    madr: &'a [i32],
+    simple: &'a [i32],
+    /// The row's address and length.
+    row: (usize, usize),
+    /// Descendants first..end, and the address where row end - 1 ends.
+    desc: (usize, usize, usize),
+}
+
+impl Desc<'_> {
+    /// The next block of up to 8 columns from col; gives its width.
+    #[inline(always)]
+    fn block<const FIRST: bool>(&self, qld: &mut [f64], col: usize) -> usize {
+        match self.row.1 - col {
+            1 => self.pull::<1, FIRST>(qld, col),
+            2 => self.pull::<2, FIRST>(qld, col),
+            3 => self.pull::<3, FIRST>(qld, col),
+            4 => self.pull::<4, FIRST>(qld, col),
+            5 => self.pull::<5, FIRST>(qld, col),
+            6 => self.pull::<6, FIRST>(qld, col),
+            7 => self.pull::<7, FIRST>(qld, col),
+            _ => self.pull::<8, FIRST>(qld, col),
+        }
+    }
+
+    /// Columns col..col+W; the FIRST block also takes and stores the quotients. Gives W.
+    #[inline(always)]
+    fn pull<const W: usize, const FIRST: bool>(&self, qld: &mut [f64], col: usize) -> usize {
+        let (ai, len) = self.row;
+        let (first, end, mut e) = self.desc;
+        let mut acc: [f64; W] = qld[ai + col..ai + col + W].try_into().unwrap();
+        for k in (first..end).rev() {
+            // row k ends at e; its last len entries are column i's and those of i's ancestors
+            let ak = self.madr[k] as usize;
+            let at = e - len;
+            e = ak;
+            if self.simple[k] != 0 {
+                continue;
+            }
+            let u: [f64; W] = qld[at + col..at + col + W].try_into().unwrap();
+            let l = if FIRST {
+                let l = u[0] / qld[ak];
+                qld[at] = l;
+                l
+            } else {
+                qld[at]
+            };
+            for s in 0..W {
+                acc[s] -= u[s] * l;
+            }
+        }
+        qld[ai + col..ai + col + W].copy_from_slice(&acc);
+        W
+    }
 }
 
 /// Factorizes qM into qLD, qLDiagInv, qLDiagSqrtInv (mj_factorM).
