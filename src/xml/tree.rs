@@ -53,8 +53,7 @@ fn element(e: &BytesStart, line: i32) -> Result<Element, String> {
     for a in e.attributes().with_checks(true) {
         let a = a.map_err(|_| bad())?;
         let key = String::from_utf8_lossy(a.key.as_ref()).into_owned();
-        let value = a.unescape_value().map_err(|_| bad())?;
-        attrs.push((key, value.into_owned()));
+        attrs.push((key, attribute_value(&a.value)));
     }
     Ok(Element {
         name,
@@ -62,6 +61,103 @@ fn element(e: &BytesStart, line: i32) -> Result<Element, String> {
         children: Vec::new(),
         line,
     })
+}
+
+/// An attribute's value as tinyxml2 gives it: newlines normalized (CR LF, LF CR and CR become
+/// LF), the five named entities and numeric character references replaced, in place; an `&`
+/// starting neither is kept (as the byte left where it is written, as tinyxml2 leaves it); the
+/// value ends at a NUL, as the C string MuJoCo reads.
+fn attribute_value(raw: &[u8]) -> String {
+    const NAMED: [(&[u8], u8); 5] = [
+        (b"quot", b'"'),
+        (b"amp", b'&'),
+        (b"apos", b'\''),
+        (b"lt", b'<'),
+        (b"gt", b'>'),
+    ];
+    let mut b = raw.to_vec();
+    let at = |b: &[u8], i: usize| b.get(i).copied().unwrap_or(0);
+    let (mut p, mut q) = (0, 0);
+    while p < raw.len() {
+        match b[p] {
+            c @ (b'\r' | b'\n') => {
+                let pair = if c == b'\r' { b'\n' } else { b'\r' };
+                p += if at(&b, p + 1) == pair { 2 } else { 1 };
+                b[q] = b'\n';
+                q += 1;
+            }
+            b'&' if at(&b, p + 1) == b'#' => match character_ref(&b[p..]) {
+                Some((utf8, used)) => {
+                    b[q..q + utf8.len()].copy_from_slice(&utf8);
+                    (p, q) = (p + used, q + utf8.len());
+                }
+                None => {
+                    b[q] = b'&';
+                    (p, q) = (p + 1, q + 1);
+                }
+            },
+            b'&' => match NAMED.iter().find(|(name, _)| {
+                b[p + 1..].starts_with(name) && at(&b, p + 1 + name.len()) == b';'
+            }) {
+                Some(&(name, c)) => {
+                    b[q] = c;
+                    (p, q) = (p + name.len() + 2, q + 1);
+                }
+                None => (p, q) = (p + 1, q + 1),
+            },
+            c => {
+                b[q] = c;
+                (p, q) = (p + 1, q + 1);
+            }
+        }
+    }
+    b.truncate(q);
+    if let Some(nul) = b.iter().position(|&c| c == 0) {
+        b.truncate(nul);
+    }
+    String::from_utf8_lossy(&b).into_owned()
+}
+
+/// A numeric character reference at the start of `s` ("&#123;" or "&#x7b;"): its UTF-8 bytes
+/// and the bytes it took, computed as tinyxml2 does (the digits read back from the value's next
+/// `;` to the nearest `#`, or `x`, in 32-bit steps; no bytes for a code above 0x1FFFFF; "&#"
+/// ending the value takes the `&` alone); None where tinyxml2 keeps the `&` (nothing after
+/// "&#x", no `;`, a character that is not a digit).
+fn character_ref(s: &[u8]) -> Option<(Vec<u8>, usize)> {
+    if s.len() <= 2 {
+        return Some((Vec::new(), 1));
+    }
+    let hex = s[2] == b'x';
+    let (radix, stop) = if hex { (16u32, b'x') } else { (10, b'#') };
+    if hex && s.len() <= 3 {
+        return None;
+    }
+    let from = if hex { 3 } else { 2 };
+    let semi = from + s[from..].iter().position(|&c| c == b';')?;
+    let digits = 1 + s[..semi].iter().rposition(|&c| c == stop)?;
+    let (mut code, mut mult) = (0u64, 1u32);
+    for &c in s[digits..semi].iter().rev() {
+        let digit = (c as char).to_digit(radix)?;
+        code = code.wrapping_add(mult.wrapping_mul(digit) as u64);
+        mult = mult.wrapping_mul(radix);
+    }
+    let n = match code {
+        0..=0x7f => 1,
+        0x80..=0x7ff => 2,
+        0x800..=0xffff => 3,
+        0x1_0000..=0x1f_ffff => 4,
+        _ => 0,
+    };
+    let mut out = vec![0u8; n];
+    let mut v = code;
+    for i in (1..n).rev() {
+        out[i] = ((v | 0x80) & 0xbf) as u8;
+        v >>= 6;
+    }
+    if n > 0 {
+        out[0] = (v | [0, 0, 0xc0, 0xe0, 0xf0][n]) as u8;
+    }
+    Some((out, semi + 1))
 }
 
 /// Blanks the nodes tinyxml2 parses as "unknown" and skips: `<!` not opening a comment or
