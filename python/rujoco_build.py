@@ -113,6 +113,11 @@ def _patch(src):
         for block in modules.values():
             text = text.replace(block, "")
         text = text[:at] + "".join(modules[n] for n in order) + text[at:]
+    # RUJOCO_O0_SOURCES (a CMake list): sources compiled at -O0, for builds that trade the
+    # bindings' speed for build time (the tests' build)
+    text += ("\nif(RUJOCO_O0_SOURCES)\n"
+             "  set_source_files_properties(${RUJOCO_O0_SOURCES} PROPERTIES COMPILE_OPTIONS -O0)\n"
+             "endif()\n")
     open(cm, "w").write(text)
     ix = os.path.join(src, "mujoco", "indexers.cc")
     text = open(ix).read()

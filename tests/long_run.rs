@@ -1,5 +1,6 @@
-//! 10,000-step runs (2,000 for models of more than 100 bodies or 60 dofs: composites, crowds of
-//! humanoids, stacks of free bodies, long chains):
+//! 10,000-step runs (2,000 for models of more than 100 bodies or 60 dofs, or with a height field
+//! of more than 10,000 points: composites, crowds of humanoids, stacks of free bodies, long
+//! chains, terrains):
 //! no NaN and no warning the reference does not also give, no crash, no hang.
 //! Models: capi-tests/models.list (must match), then the models of models-extra.list and the
 //! main corpus (../shared/corpus or the dm_control suite, when present) that both libraries
@@ -78,7 +79,7 @@ fn ten_thousand_steps_like_the_reference() {
         }
     }
     let msg = format!(
-        "long runs ({STEPS} steps, 2000 above 100 bodies or 60 dofs): {same} models end like the reference (NaN, warnings); \
+        "long runs ({STEPS} steps, 2000 above 100 bodies, 60 dofs or 10,000 height-field points): {same} models end like the reference (NaN, warnings); \
          {unsupported} stop on features not supported yet; {} differ; {skipped} files skipped \
          (the reference rejects or stops)\n{}",
         wrong.len(),

@@ -87,31 +87,15 @@ fn threads_share_a_model() {
     match nightly_tsan() {
         Err(why) => body.push_str(&format!("ThreadSanitizer: not run ({why})\n")),
         Ok(()) => {
-            let dir = target_dir().join("tsan");
-            let o = Command::new("cargo")
-                .args(["+nightly", "build", "--release", "--example", "threads"])
-                .args(["--target", "x86_64-unknown-linux-gnu", "--target-dir"])
-                .arg(&dir)
-                .current_dir(root())
-                .env(
-                    "RUSTFLAGS",
-                    // std comes prebuilt without instrumentation (no rust-src here); the
-                    // threads are POSIX threads, whose create and join TSan sees
-                    "-Zsanitizer=thread -Cunsafe-allow-abi-mismatch=sanitizer",
-                )
-                .env_remove("CARGO_TARGET_DIR")
-                // builds in parallel (a third less time here) and at -O1 (a fifth less; the
-                // level ThreadSanitizer's documentation suggests); the run is a little slower
-                .env("CARGO_PROFILE_RELEASE_CODEGEN_UNITS", "16")
-                .env("CARGO_PROFILE_RELEASE_OPT_LEVEL", "1")
+            let o = Command::new(root().join("capi-tests/build-tsan"))
                 .output()
-                .expect("cargo");
+                .expect("bash");
             assert!(
                 o.status.success(),
                 "building under ThreadSanitizer failed:\n{}",
                 text(&o.stderr)
             );
-            let tsan = dir.join("x86_64-unknown-linux-gnu/release/examples/threads");
+            let tsan = PathBuf::from(text(&o.stdout).trim());
             let opts = format!(
                 "halt_on_error=1 suppressions={}",
                 root().join("capi-tests/tsan.supp").display()

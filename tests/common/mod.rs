@@ -110,8 +110,9 @@ pub fn compile_c(srcs: &[PathBuf], name: &str, lib: Lib) -> PathBuf {
 /// Runs gcc: `opts`, the sources, then the library (headers, -lmujoco, rpath), `after_lib`
 /// (libraries that must follow it) and libm, into `out`; fails the test with gcc's errors.
 fn gcc(out: &Path, opts: &[&str], srcs: &[PathBuf], lib: Lib, after_lib: &[&str]) {
+    let tmp = partial(out);
     let mut cmd = Command::new("gcc");
-    cmd.args(opts).arg("-o").arg(out).args(srcs);
+    cmd.args(opts).arg("-o").arg(&tmp).args(srcs);
     match lib {
         Lib::Ref => {
             require_reference();
@@ -137,6 +138,15 @@ fn gcc(out: &Path, opts: &[&str], srcs: &[PathBuf], lib: Lib, after_lib: &[&str]
         lib.name(),
         String::from_utf8_lossy(&o.stderr)
     );
+    std::fs::rename(&tmp, out).unwrap();
+}
+
+/// Where a compiler writes `out` before it is renamed into place: test executables run side by
+/// side may build the same program, and none may run a half-written one.
+fn partial(out: &Path) -> PathBuf {
+    let mut p = out.as_os_str().to_owned();
+    p.push(format!(".{}.tmp", std::process::id()));
+    PathBuf::from(p)
 }
 
 /// MuJoCo 4.0.0 from its PyPI wheel (mujoco-core), unpacked by capi-tests/run-all into
@@ -151,9 +161,10 @@ pub fn v4_lib() -> Option<(PathBuf, PathBuf)> {
 pub fn compile_c_v4(srcs: &[PathBuf], name: &str) -> Option<PathBuf> {
     let (inc, lib) = v4_lib()?;
     let out = work_dir("bin").join(format!("{name}-v4"));
+    let tmp = partial(&out);
     let o = Command::new("gcc")
         .args(["-std=c11", "-O2", "-o"])
-        .arg(&out)
+        .arg(&tmp)
         .args(srcs)
         .arg("-I")
         .arg(&inc)
@@ -170,6 +181,7 @@ pub fn compile_c_v4(srcs: &[PathBuf], name: &str) -> Option<PathBuf> {
         "compiling {name} against MuJoCo 4.0.0 failed:\n{}",
         String::from_utf8_lossy(&o.stderr)
     );
+    std::fs::rename(&tmp, &out).unwrap();
     Some(out)
 }
 
