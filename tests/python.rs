@@ -25,7 +25,7 @@ const PACKAGES: &[&str] = &[
 
 /// CMake arguments of the tests' wheel build (MuJoCo's setup.py reads MUJOCO_CMAKE_ARGS): the
 /// same sources at -O1 without link-time optimization, which builds in two-thirds of the time
-/// (150 s against 228 on two cores), and the four that compile faster at -O0 at -O0 (structs.cc
+/// (150 s against 228 on two cores), except four sources that compile faster at -O0 (structs.cc
 /// 52 s against 80; the others take longer at -O0); `pip install ./python` outside the tests
 /// keeps MuJoCo's -O3 and LTO. Both sides run the same compiled bindings, so the comparisons
 /// are unaffected.
