@@ -438,11 +438,11 @@ pub struct Xvfb {
 }
 
 impl Xvfb {
-    /// Starts Xvfb (1280x1024, 24 bits) on a display no other server uses.
+    /// Starts Xvfb (1280x1024, 24 bits) on a display it picks itself (-displayfd: the first
+    /// display no running server holds, atomically, so test executables running side by side
+    /// never share one).
     pub fn start() -> Xvfb {
-        // one start at a time in this process, each on a display of its own
-        static NEXT: std::sync::Mutex<usize> = std::sync::Mutex::new(0);
-        let mut next = NEXT.lock().unwrap_or_else(|e| e.into_inner());
+        static NEXT: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
         assert!(
             Command::new("sh")
                 .args(["-c", "command -v Xvfb"])
@@ -452,41 +452,53 @@ impl Xvfb {
                 .success(),
             "Xvfb missing: install xvfb (capi-tests/run-all does it)"
         );
-        for _ in 0..50 {
-            let num = 150 + (std::process::id() as usize + *next) % 400;
-            *next += 1;
-            let socket = format!("/tmp/.X11-unix/X{num}");
-            if Path::new(&socket).exists() || Path::new(&format!("/tmp/.X{num}-lock")).exists() {
-                continue;
+        let n = NEXT.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+        let file = work_dir("xvfb").join(format!("{}-{n}", std::process::id()));
+        let _ = std::fs::remove_file(&file);
+        let mut child = Command::new("sh")
+            .args([
+                "-c",
+                "exec Xvfb -displayfd 3 -screen 0 1280x1024x24 -nolisten tcp 3>\"$1\"",
+                "sh",
+            ])
+            .arg(&file)
+            .stdout(Stdio::null())
+            .stderr(Stdio::null())
+            .spawn()
+            .expect("cannot start Xvfb");
+        // the number arrives, newline-terminated, once the server accepts connections
+        for _ in 0..400 {
+            let written = std::fs::read_to_string(&file).unwrap_or_default();
+            if let Some(num) = written.strip_suffix('\n') {
+                let _ = std::fs::remove_file(&file);
+                return Xvfb {
+                    child,
+                    display: format!(":{}", num.trim()),
+                };
             }
-            let mut child = Command::new("Xvfb")
-                .arg(format!(":{num}"))
-                .args(["-screen", "0", "1280x1024x24", "-nolisten", "tcp"])
-                .stdout(Stdio::null())
-                .stderr(Stdio::null())
-                .spawn()
-                .expect("cannot start Xvfb");
-            for _ in 0..100 {
-                if Path::new(&socket).exists() {
-                    return Xvfb {
-                        child,
-                        display: format!(":{num}"),
-                    };
-                }
-                if let Ok(Some(_)) = child.try_wait() {
-                    break;
-                }
-                std::thread::sleep(std::time::Duration::from_millis(50));
+            if let Ok(Some(status)) = child.try_wait() {
+                panic!("Xvfb stopped before it took a display: {status}");
             }
-            let _ = child.kill();
-            let _ = child.wait();
+            std::thread::sleep(std::time::Duration::from_millis(50));
         }
-        panic!("could not start Xvfb on a free display");
+        let _ = child.kill();
+        let _ = child.wait();
+        panic!("Xvfb took no display in 20 s");
     }
 }
 
 impl Drop for Xvfb {
+    /// SIGTERM first: the server then removes its lock file and socket.
     fn drop(&mut self) {
+        let _ = Command::new("kill")
+            .args(["-TERM", &self.child.id().to_string()])
+            .status();
+        for _ in 0..100 {
+            if let Ok(Some(_)) = self.child.try_wait() {
+                return;
+            }
+            std::thread::sleep(std::time::Duration::from_millis(20));
+        }
         let _ = self.child.kill();
         let _ = self.child.wait();
     }
