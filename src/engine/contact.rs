@@ -40,7 +40,20 @@ pub fn instantiate(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineE
         if d.contact[i].exclude != 0 {
             continue;
         }
-        let con = d.contact[i];
+        // the fields used below (the whole contact is a large copy)
+        let con = {
+            let c = &d.contact[i];
+            Fields {
+                dim: c.dim,
+                geom1: c.geom1,
+                geom2: c.geom2,
+                pos: c.pos,
+                frame: c.frame,
+                dist: c.dist,
+                includemargin: c.includemargin,
+                friction: c.friction,
+            }
+        };
         let dim = con.dim.clamp(1, 6) as usize;
         let b1 = m.geom_bodyid()[con.geom1 as usize] as usize;
         let b2 = m.geom_bodyid()[con.geom2 as usize] as usize;
@@ -111,13 +124,25 @@ pub fn instantiate(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineE
     Ok(())
 }
 
+/// The fields of a contact that its constraint rows read.
+struct Fields {
+    dim: i32,
+    geom1: i32,
+    geom2: i32,
+    pos: [f64; 3],
+    frame: [f64; 9],
+    dist: f64,
+    includemargin: f64,
+    friction: [f64; 5],
+}
+
 /// diagApprox of the contact rows starting at row i; returns how many rows it set.
 pub fn diag_approx(m: &Model, d: &mut Data, i: usize) -> usize {
-    let con = d.contact[d.efc_id[i] as usize];
+    let con = &d.contact[d.efc_id[i] as usize];
     let iw = m.body_invweight0();
     let b1 = m.geom_bodyid()[con.geom1 as usize] as usize;
     let b2 = m.geom_bodyid()[con.geom2 as usize] as usize;
-    let dim = con.dim as usize;
+    let (dim, friction) = (con.dim as usize, con.friction);
     let tran = iw[2 * b1] + iw[2 * b2];
     let rot = iw[2 * b1 + 1] + iw[2 * b2 + 1];
     match d.efc_type[i] {
@@ -133,7 +158,7 @@ pub fn diag_approx(m: &Model, d: &mut Data, i: usize) -> usize {
         }
         _ => {
             for j in 0..dim - 1 {
-                let f = con.friction[j];
+                let f = friction[j];
                 let v = tran + f * f * if j < 2 { tran } else { rot };
                 d.efc_diagApprox[i + 2 * j] = v;
                 d.efc_diagApprox[i + 2 * j + 1] = v;

@@ -307,12 +307,16 @@ pub fn add_m_sparse_with(
         let mat = a.alloc_stale(nv * nv)?;
         let mcol = a.alloc_int_stale(nv * nv)?;
         let mnnz = a.alloc_int(nv)?;
-        // 2.2.2 also takes nv ints for the rows' addresses, which are i*nv here
-        a.alloc_int_stale(nv)?;
+        // the rows' addresses (2.2.2 takes these nv ints too): i*nv for the mirror, one row
+        // after another otherwise (far less memory touched)
+        let madr_row = a.alloc_int_stale(nv)?;
         let buf = a.alloc(nv)?;
         let buf_ind = a.alloc_int(nv)?;
         // lower triangle of M, rows in ascending column order
+        let mut next = 0;
         for i in 0..nv {
+            let row = if upper { i * nv } else { next };
+            madr_row[i] = row as i32;
             if simple[i] != 0 {
                 continue;
             }
@@ -320,15 +324,16 @@ pub fn add_m_sparse_with(
             let mut j = i as i32;
             let mut cnt = 0;
             while j >= 0 {
-                mat[i * nv + cnt] = qm[adr];
-                mcol[i * nv + cnt] = j;
+                mat[row + cnt] = qm[adr];
+                mcol[row + cnt] = j;
                 cnt += 1;
                 adr += 1;
                 j = m.dof_parentid()[j as usize];
             }
             mnnz[i] = cnt as i32;
-            mat[i * nv..i * nv + cnt].reverse();
-            mcol[i * nv..i * nv + cnt].reverse();
+            mat[row..row + cnt].reverse();
+            mcol[row..row + cnt].reverse();
+            next = row + cnt;
         }
         // the upper triangle too (simple rows are empty: nothing to mirror from them)
         if upper {
@@ -339,13 +344,13 @@ pub fn add_m_sparse_with(
                 continue;
             }
             let adr = rowadr[i] as usize;
-            let cnt = mnnz[i] as usize;
+            let (row, cnt) = (madr_row[i] as usize, mnnz[i] as usize);
             rownnz[i] = combine_sparse(
                 &mut dst[adr..],
                 &mut colind[adr..],
                 rownnz[i] as usize,
-                &mat[i * nv..i * nv + cnt],
-                &mcol[i * nv..i * nv + cnt],
+                &mat[row..row + cnt],
+                &mcol[row..row + cnt],
                 buf,
                 buf_ind,
             ) as i32;

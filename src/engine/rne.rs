@@ -165,21 +165,22 @@ pub fn rne_post_constraint(m: &Model, d: &mut Data) -> Result<(), EngineError> {
 
     // contact forces, rotated from the contact frame (force and torque swapped)
     for c in 0..d.raw.ncon.max(0) as usize {
-        let con = d.contact[c];
+        let con = &d.contact[c];
         if con.efc_address < 0 {
             continue;
         }
+        let (frame, pos, g1, g2) = (con.frame, con.pos, con.geom1, con.geom2);
         let lfrc = contact_force(m, d, c as i32);
         let mut frc = [0.0; 6];
-        frc[..3].copy_from_slice(&mul_mat_t_vec3(&con.frame, &v3(&lfrc[3..])));
-        frc[3..].copy_from_slice(&mul_mat_t_vec3(&con.frame, &v3(&lfrc[..3])));
-        let b1 = m.geom_bodyid()[con.geom1 as usize] as usize;
+        frc[..3].copy_from_slice(&mul_mat_t_vec3(&frame, &v3(&lfrc[3..])));
+        frc[3..].copy_from_slice(&mul_mat_t_vec3(&frame, &v3(&lfrc[..3])));
+        let b1 = m.geom_bodyid()[g1 as usize] as usize;
         if b1 != 0 {
-            add_ext(m, d, b1, &frc, &con.pos, -1.0);
+            add_ext(m, d, b1, &frc, &pos, -1.0);
         }
-        let b2 = m.geom_bodyid()[con.geom2 as usize] as usize;
+        let b2 = m.geom_bodyid()[g2 as usize] as usize;
         if b2 != 0 {
-            add_ext(m, d, b2, &frc, &con.pos, 1.0);
+            add_ext(m, d, b2, &frc, &pos, 1.0);
         }
     }
 

@@ -11,9 +11,12 @@ use crate::abi::view::Arena;
 use crate::abi::*;
 use crate::math::blas::{add_to_scl, dot, mul_mat_vec, norm, scl, sqr_mat_td_lower, sub_from};
 use crate::math::chol::{chol_factor, chol_solve, chol_update, chol_update2};
-use crate::math::chol_sparse::{chol_factor_sparse, chol_solve_sparse, chol_update_sparse};
+use crate::math::chol_sparse::{
+    chol_factor_sparse, chol_solve_sparse, chol_sparse_counts, chol_update_sparse,
+};
 use crate::math::sparse::{
-    compress_sparse, dot_sparse, mul_mat_vec_sparse, sqr_mat_td_sparse_lower, SparseRef,
+    compress_sparse, dot_sparse, mul_mat_vec_sparse, sqr_mat_td_sparse_pattern,
+    sqr_mat_td_sparse_values, SparseRef,
 };
 use mjtConstraintState_::*;
 
@@ -726,18 +729,22 @@ fn hessian_direct(m: &Model, d: &mut Data, a: &mut Arena, c: &mut Ctx) -> Result
             a.scope(|a| -> Result<(), EngineError> {
                 let chain = a.alloc_int_stale(2 * nv)?;
                 let buf = a.alloc_stale(nv)?;
-                sqr_mat_td_sparse_lower(
+                let (rownnz, rowadr, colind) = (&mut *c.rownnz, &mut *c.rowadr, &mut *c.colind);
+                let staged = sqr_mat_td_sparse_pattern(
+                    nv, rownnz, rowadr, colind, &pat, &pat_t, chain, true,
+                );
+                place_hessian_rows(m, staged, rownnz, rowadr, colind);
+                sqr_mat_td_sparse_values(
                     c.h,
                     d.efc_J,
                     d.efc_JT,
                     Some(hdiag),
                     nv,
-                    c.rownnz,
-                    c.rowadr,
-                    c.colind,
+                    rownnz,
+                    rowadr,
+                    colind,
                     &pat,
                     &pat_t,
-                    chain,
                     buf,
                 );
                 Ok(())
@@ -769,6 +776,50 @@ fn hessian_direct(m: &Model, d: &mut Data, a: &mut Arena, c: &mut Ctx) -> Result
     }
     c.nupdate = nefc as i32;
     Ok(())
+}
+
+/// Gives each row of the sparse Hessian, whose J'DJ pattern is packed at the front of
+/// `colind`, room for what adding M and the factorization put in it, the rows one after
+/// another (a factorization in the same order as with rows nv apart, 2.2.2's layout, touching
+/// far less memory); rows nv apart where the counting does not fit in `colind`.
+fn place_hessian_rows(
+    m: &Model,
+    staged: usize,
+    rownnz: &[i32],
+    rowadr: &mut [i32],
+    colind: &mut [i32],
+) {
+    let nv = m.raw.nv as usize;
+    let (pattern, rest) = colind.split_at_mut(staged);
+    let counted = rest.len().checked_sub(nv).and_then(|len| {
+        let (work, count) = rest.split_at_mut(len);
+        chol_sparse_counts(
+            nv,
+            rownnz,
+            rowadr,
+            pattern,
+            m.dof_parentid(),
+            m.dof_simplenum(),
+            count,
+            work,
+        )
+    });
+    let count_at = colind.len() - nv;
+    let (mut src_end, mut dst_end) = (staged, counted.unwrap_or(0));
+    for r in (0..nv).rev() {
+        let n = rownnz[r] as usize;
+        let src = src_end - n;
+        let dst = match counted {
+            Some(_) => {
+                dst_end -= colind[count_at + r] as usize;
+                dst_end
+            }
+            None => r * nv,
+        };
+        colind.copy_within(src..src + n, dst);
+        rowadr[r] = dst as i32;
+        src_end = src;
+    }
 }
 
 /// Hcone = H plus the cone Hessians of contacts in the cone state, as rank-one updates of the

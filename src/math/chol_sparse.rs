@@ -84,6 +84,83 @@ pub fn chol_factor_sparse(
     Ok(rank)
 }
 
+/// Sizes of the rows of `chol_factor_sparse`'s factor, from the pattern alone: row r holds
+/// its own (rownnz, rowadr, colind: lower triangle, any order), its diagonal, r's ancestors in
+/// `parent` where `simple[r]` is 0 (the mass matrix's pattern), and the fill-in, which the
+/// factorization takes from every row whose pattern holds r. Sizes go to `count`; `work`
+/// takes 4n ints and the rows' patterns. Returns their total, or None when `work` is too
+/// small.
+#[allow(clippy::too_many_arguments)]
+pub fn chol_sparse_counts(
+    n: usize,
+    rownnz: &[i32],
+    rowadr: &[i32],
+    colind: &[i32],
+    parent: &[i32],
+    simple: &[i32],
+    count: &mut [i32],
+    work: &mut [i32],
+) -> Option<usize> {
+    let len = work.len().checked_sub(4 * n)?;
+    let (lists, rest) = work.split_at_mut(len);
+    let (mark, rest) = rest.split_at_mut(n);
+    let (head, rest) = rest.split_at_mut(n);
+    let (next, start) = rest.split_at_mut(n);
+    mark.fill(-1);
+    head.fill(-1);
+    // each row's pattern goes (unordered) below the one before, from the end of `lists`; the
+    // fill of row r comes from its children in the elimination tree (the rows whose largest
+    // index below the diagonal is r), whose patterns are read once, there
+    let mut top = len;
+    for r in (0..n).rev() {
+        let ri = r as i32;
+        let end = top;
+        let mut up = -1;
+        let mut add = |j: i32, lists: &mut [i32], top: &mut usize| -> Option<()> {
+            if mark[u(j)] != ri {
+                mark[u(j)] = ri;
+                *top = top.checked_sub(1)?;
+                lists[*top] = j;
+                if j < ri && j > up {
+                    up = j;
+                }
+            }
+            Some(())
+        };
+        add(ri, lists, &mut top)?;
+        let a = u(rowadr[r]);
+        for &j in &colind[a..a + u(rownnz[r])] {
+            add(j, lists, &mut top)?;
+        }
+        if simple[r] == 0 {
+            let mut j = parent[r];
+            while j >= 0 {
+                add(j, lists, &mut top)?;
+                j = parent[u(j)];
+            }
+        }
+        let mut c = head[r];
+        while c >= 0 {
+            let cu = u(c);
+            let s = u(start[cu]);
+            for k in s..s + u(count[cu]) {
+                let j = lists[k];
+                if j != c {
+                    add(j, lists, &mut top)?;
+                }
+            }
+            c = next[cu];
+        }
+        count[r] = (end - top) as i32;
+        start[r] = top as i32;
+        if up >= 0 {
+            next[r] = head[u(up)];
+            head[u(up)] = ri;
+        }
+    }
+    Some(len - top)
+}
+
 /// res = (L'*L)^-1 * vec for the factor of `chol_factor_sparse`.
 pub fn chol_solve_sparse(
     res: &mut [f64],

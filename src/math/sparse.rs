@@ -460,12 +460,28 @@ pub fn sqr_mat_td_sparse_lower(
     chain: &mut [i32],
     buffer: &mut [f64],
 ) {
-    for (r, a) in res_rowadr[..nc].iter_mut().enumerate() {
-        *a = (r * nc) as i32;
-    }
+    sqr_mat_td_sparse_pattern(nc, res_rownnz, res_rowadr, res_colind, m, mt, chain, false);
+    sqr_mat_td_sparse_values(
+        res, mat, mat_t, diag, nc, res_rownnz, res_rowadr, res_colind, m, mt, buffer,
+    );
+}
 
-    // pattern of each row of the (lower-triangular) result
+/// The pattern of `sqr_mat_td_sparse_lower`'s rows: each row at r*nc, or (`packed`) right
+/// after the one before; returns the number of entries.
+#[allow(clippy::too_many_arguments)]
+pub fn sqr_mat_td_sparse_pattern(
+    nc: usize,
+    res_rownnz: &mut [i32],
+    res_rowadr: &mut [i32],
+    res_colind: &mut [i32],
+    m: &SparseRef,
+    mt: &SparseRef,
+    chain: &mut [i32],
+    packed: bool,
+) -> usize {
+    let mut next = 0;
     for r in 0..nc {
+        res_rowadr[r] = if packed { next } else { r * nc } as i32;
         let same_as_prev = r > 0 && mt.rowsuper.is_some_and(|s| s[r - 1] > 0);
         if same_as_prev {
             res_rownnz[r] = res_rownnz[r - 1];
@@ -476,9 +492,9 @@ pub fn sqr_mat_td_sparse_lower(
                 res_colind[dst + n] = r as i32;
                 res_rownnz[r] += 1;
             }
+            next = u(res_rowadr[r]) + u(res_rownnz[r]);
             continue;
         }
-
         let mut nchain = 0;
         let (mut inew, mut iold) = (0, nc);
         let mut lastadded: i32 = -1;
@@ -523,8 +539,26 @@ pub fn sqr_mat_td_sparse_lower(
         res_rownnz[r] = nchain as i32;
         let dst = u(res_rowadr[r]);
         res_colind[dst..dst + nchain].copy_from_slice(&chain[inew..inew + nchain]);
+        next = dst + nchain;
     }
+    next
+}
 
+/// The values of `sqr_mat_td_sparse_lower`'s rows, whose pattern is in place.
+#[allow(clippy::too_many_arguments)]
+pub fn sqr_mat_td_sparse_values(
+    res: &mut [f64],
+    mat: &[f64],
+    mat_t: &[f64],
+    diag: Option<&[f64]>,
+    nc: usize,
+    res_rownnz: &[i32],
+    res_rowadr: &[i32],
+    res_colind: &[i32],
+    m: &SparseRef,
+    mt: &SparseRef,
+    buffer: &mut [f64],
+) {
     // values of the lower triangle
     for r in 0..nc {
         let adr = u(res_rowadr[r]);

@@ -677,3 +677,110 @@ fn mul_mat_t_vec_span_is_whole_rows_to_the_bit() {
         assert_eq!(bits(&x), bits(&y), "nc {nc}");
     }
 }
+
+#[test]
+fn sparse_cholesky_counts_match_the_factorization() {
+    use super::chol_sparse::*;
+    let mut rng = Rng(19);
+    for trial in 0..200 {
+        let n = 1 + trial % 37;
+        let parent: Vec<i32> = (0..n)
+            .map(|r| match r {
+                0 => -1,
+                _ if rng.next() < -1.0 => -1,
+                _ => ((rng.next() + 2.0) / 4.0 * r as f64) as i32,
+            })
+            .collect();
+        let simple: Vec<i32> = (0..n).map(|_| (rng.next() > 1.0) as i32).collect();
+        let density = (rng.next() + 2.0) / 16.0;
+        // own patterns (lower, diagonal left to the mass matrix's part), packed
+        let (mut own, mut own_nnz, mut own_adr) = (vec![], vec![0; n], vec![0; n]);
+        // the whole lower pattern, rows n apart, diagonally dominant values
+        let (mut mat, mut colind, mut rownnz) = (vec![0.0; n * n], vec![0; n * n], vec![0; n]);
+        let rowadr: Vec<i32> = (0..n).map(|r| (r * n) as i32).collect();
+        for r in 0..n {
+            let mut cols = vec![r];
+            own_adr[r] = own.len() as i32;
+            for c in 0..r {
+                if (rng.next() + 2.0) / 4.0 < density {
+                    own.push(c as i32);
+                    cols.push(c);
+                }
+            }
+            own_nnz[r] = own.len() as i32 - own_adr[r];
+            if simple[r] == 0 {
+                let mut j = parent[r];
+                while j >= 0 {
+                    cols.push(j as usize);
+                    j = parent[j as usize];
+                }
+            }
+            cols.sort();
+            cols.dedup();
+            for &c in &cols {
+                let k = r * n + rownnz[r] as usize;
+                mat[k] = if c == r { 4.0 * n as f64 } else { rng.next() };
+                colind[k] = c as i32;
+                rownnz[r] += 1;
+            }
+        }
+        let (packed_mat, packed_nnz, packed_col) = (mat.clone(), rownnz.clone(), colind.clone());
+        let (mut buf, mut bi) = (vec![0.0; n], vec![0; n]);
+        let rank = chol_factor_sparse(
+            &mut mat,
+            n,
+            1e-15,
+            &mut rownnz,
+            &rowadr,
+            &mut colind,
+            &mut buf,
+            &mut bi,
+        );
+        assert_eq!(rank, Ok(n));
+
+        let mut count = vec![0; n];
+        let mut work = vec![0; n * n + 4 * n];
+        let total = chol_sparse_counts(
+            n, &own_nnz, &own_adr, &own, &parent, &simple, &mut count, &mut work,
+        );
+        assert_eq!(count, rownnz, "trial {trial}");
+        assert_eq!(total, Some(rownnz.iter().sum::<i32>() as usize));
+        // too little room: no counts
+        let short = total.unwrap() + 4 * n - 1;
+        assert_eq!(
+            chol_sparse_counts(
+                n,
+                &own_nnz,
+                &own_adr,
+                &own,
+                &parent,
+                &simple,
+                &mut count,
+                &mut work[..short],
+            ),
+            None
+        );
+
+        // rows one after another, each with its count's room: the same factor, bit for bit
+        let mut adr = vec![0; n];
+        for r in 1..n {
+            adr[r] = adr[r - 1] + count[r - 1];
+        }
+        let (mut pm, mut pc) = (vec![0.0; n * n], vec![0; n * n]);
+        for r in 0..n {
+            let (s, d, k) = (r * n, adr[r] as usize, packed_nnz[r] as usize);
+            pm[d..d + k].copy_from_slice(&packed_mat[s..s + k]);
+            pc[d..d + k].copy_from_slice(&packed_col[s..s + k]);
+        }
+        let mut pn = packed_nnz.clone();
+        let rank = chol_factor_sparse(&mut pm, n, 1e-15, &mut pn, &adr, &mut pc, &mut buf, &mut bi);
+        assert_eq!(rank, Ok(n));
+        assert_eq!(pn, rownnz);
+        for r in 0..n {
+            let (s, d, k) = (r * n, adr[r] as usize, rownnz[r] as usize);
+            assert_eq!(&pc[d..d + k], &colind[s..s + k]);
+            let same = pm[d..d + k].iter().zip(&mat[s..s + k]);
+            assert!(same.into_iter().all(|(a, b)| a.to_bits() == b.to_bits()));
+        }
+    }
+}
