@@ -778,10 +778,15 @@ fn hessian_direct(m: &Model, d: &mut Data, a: &mut Arena, c: &mut Ctx) -> Result
     Ok(())
 }
 
+/// Smallest nv whose sparse Hessian rows are packed (`place_hessian_rows`): below it the
+/// nv x nv layout stays in the L2 cache and counting costs more than it saves.
+const PACKED_NV: usize = 256;
+
 /// Gives each row of the sparse Hessian, whose J'DJ pattern is packed at the front of
 /// `colind`, room for what adding M and the factorization put in it, the rows one after
 /// another (a factorization in the same order as with rows nv apart, 2.2.2's layout, touching
-/// far less memory); rows nv apart where the counting does not fit in `colind`.
+/// far less memory), from PACKED_NV dofs; rows nv apart below it, or where the counting does
+/// not fit in `colind`.
 fn place_hessian_rows(
     m: &Model,
     staged: usize,
@@ -791,7 +796,8 @@ fn place_hessian_rows(
 ) {
     let nv = m.raw.nv as usize;
     let (pattern, rest) = colind.split_at_mut(staged);
-    let counted = rest.len().checked_sub(nv).and_then(|len| {
+    let room = rest.len().checked_sub(nv).filter(|_| nv >= PACKED_NV);
+    let counted = room.and_then(|len| {
         let (work, count) = rest.split_at_mut(len);
         chol_sparse_counts(
             nv,
