@@ -730,10 +730,13 @@ fn hessian_direct(m: &Model, d: &mut Data, a: &mut Arena, c: &mut Ctx) -> Result
                 let chain = a.alloc_int_stale(2 * nv)?;
                 let buf = a.alloc_stale(nv)?;
                 let (rownnz, rowadr, colind) = (&mut *c.rownnz, &mut *c.rowadr, &mut *c.colind);
+                let packed = nv >= PACKED_NV;
                 let staged = sqr_mat_td_sparse_pattern(
-                    nv, rownnz, rowadr, colind, &pat, &pat_t, chain, true,
+                    nv, rownnz, rowadr, colind, &pat, &pat_t, chain, packed,
                 );
-                place_hessian_rows(m, staged, rownnz, rowadr, colind);
+                if packed {
+                    place_hessian_rows(m, staged, rownnz, rowadr, colind);
+                }
                 sqr_mat_td_sparse_values(
                     c.h,
                     d.efc_J,
@@ -785,8 +788,7 @@ const PACKED_NV: usize = 256;
 /// Gives each row of the sparse Hessian, whose J'DJ pattern is packed at the front of
 /// `colind`, room for what adding M and the factorization put in it, the rows one after
 /// another (a factorization in the same order as with rows nv apart, 2.2.2's layout, touching
-/// far less memory), from PACKED_NV dofs; rows nv apart below it, or where the counting does
-/// not fit in `colind`.
+/// far less memory); rows nv apart where the counting does not fit in `colind`.
 fn place_hessian_rows(
     m: &Model,
     staged: usize,
@@ -796,7 +798,7 @@ fn place_hessian_rows(
 ) {
     let nv = m.raw.nv as usize;
     let (pattern, rest) = colind.split_at_mut(staged);
-    let room = rest.len().checked_sub(nv).filter(|_| nv >= PACKED_NV);
+    let room = rest.len().checked_sub(nv);
     let counted = room.and_then(|len| {
         let (work, count) = rest.split_at_mut(len);
         chol_sparse_counts(

@@ -724,7 +724,7 @@ fn sparse_cholesky_counts_match_the_factorization() {
                 rownnz[r] += 1;
             }
         }
-        let (packed_mat, packed_nnz, packed_col) = (mat.clone(), rownnz.clone(), colind.clone());
+        let (in_mat, in_nnz, in_col) = (mat.clone(), rownnz.clone(), colind.clone());
         let (mut buf, mut bi) = (vec![0.0; n], vec![0; n]);
         let rank = chol_factor_sparse(
             &mut mat,
@@ -768,11 +768,11 @@ fn sparse_cholesky_counts_match_the_factorization() {
         }
         let (mut pm, mut pc) = (vec![0.0; n * n], vec![0; n * n]);
         for r in 0..n {
-            let (s, d, k) = (r * n, adr[r] as usize, packed_nnz[r] as usize);
-            pm[d..d + k].copy_from_slice(&packed_mat[s..s + k]);
-            pc[d..d + k].copy_from_slice(&packed_col[s..s + k]);
+            let (s, d, k) = (r * n, adr[r] as usize, in_nnz[r] as usize);
+            pm[d..d + k].copy_from_slice(&in_mat[s..s + k]);
+            pc[d..d + k].copy_from_slice(&in_col[s..s + k]);
         }
-        let mut pn = packed_nnz.clone();
+        let mut pn = in_nnz.clone();
         let rank = chol_factor_sparse(&mut pm, n, 1e-15, &mut pn, &adr, &mut pc, &mut buf, &mut bi);
         assert_eq!(rank, Ok(n));
         assert_eq!(pn, rownnz);
