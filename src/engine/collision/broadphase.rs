@@ -5,17 +5,26 @@
 
 use crate::abi::mjtGeom_;
 use crate::abi::view::Arena;
+use crate::engine::hooks;
 use crate::engine::linalg::row;
 use crate::engine::{Data, EngineError, Model};
 use crate::math::eig3::eig3;
 use crate::math::vec3::{dot3, sub3};
+
+use super::{can_pair, dynamic_pair_apart, welds_filtered};
 use crate::math::Mat3;
 
 /// Does the body have a geom with contype or conaffinity?
 pub fn can_collide(m: &Model, b: usize) -> bool {
+    body_masks(m, b) != (0, 0)
+}
+
+/// The contype and conaffinity masks of all of a body's geoms together.
+fn body_masks(m: &Model, b: usize) -> (i32, i32) {
     let adr = m.body_geomadr()[b].max(0) as usize;
-    (adr..adr + m.body_geomnum()[b].max(0) as usize)
-        .any(|g| m.geom_contype()[g] != 0 || m.geom_conaffinity()[g] != 0)
+    (adr..adr + m.body_geomnum()[b].max(0) as usize).fold((0, 0), |(t, a), g| {
+        (t | m.geom_contype()[g], a | m.geom_conaffinity()[g])
+    })
 }
 
 fn has_plane_or_hfield(m: &Model, b: usize) -> bool {
@@ -141,6 +150,132 @@ fn principal_frame(m: &Model, d: &Data) -> Mat3 {
     eig3(&cov).eigvec
 }
 
+/// Most swept bodies, and geom pairs tested, with which `pairs_without_frame` is tried.
+const MAX_FRAMELESS_BODIES: usize = 8;
+const MAX_FRAMELESS_TESTS: usize = 32;
+
+/// The swept pairs that matter, found without the principal frame (2.2.2 computes it in every
+/// step: an iterative eigen-decomposition): a pair of swept bodies whose geoms' bounding
+/// spheres (with margins, as in the boxes) overlap by more than any rounding is in the sweep's
+/// list in every frame; a pair the collision loop filters out, or whose every geom pair fails
+/// mj_collideGeoms's bounding-sphere test, gives no contact whether listed or not. When every
+/// pair is one or the other, the first kind are the pairs, and the contacts are the sweep's.
+/// False (nothing added) when some pair is in between, a user contact filter is to see every
+/// listed pair, a swept body also pairs with all bodies (its pairs would be listed twice), or
+/// some position is not finite or too large for the sweep's f32 keys. `bodies` and `masks`:
+/// scratch of at least one slot per swept body.
+fn pairs_without_frame(
+    m: &Model,
+    d: &Data,
+    pairs: &mut Pairs,
+    bodies: &mut [u64],
+    masks: &mut [u64],
+) -> Result<bool, EngineError> {
+    if hooks::contact_filter_set() {
+        return Ok(false);
+    }
+    let nbody = m.raw.nbody as usize;
+    let geoms = |b: usize| {
+        let adr = m.body_geomadr()[b].max(0) as usize;
+        adr..adr + m.body_geomnum()[b].max(0) as usize
+    };
+    let (rbound, margin) = (m.geom_rbound(), m.geom_margin());
+    const LARGE: f64 = 1e30;
+    // the swept bodies, each with the masks of all its geoms together (no pair of masks
+    // matches where these do not)
+    let mut n = 0;
+    for b in 1..nbody {
+        let (t, a) = body_masks(m, b);
+        if t == 0 && a == 0 {
+            continue;
+        }
+        for g in geoms(b) {
+            let p = row::<3>(d.geom_xpos, g);
+            if !(p.iter().all(|x| x.abs() < LARGE)
+                && (0.0..LARGE).contains(&(rbound[g] + margin[g])))
+            {
+                return Ok(false);
+            }
+        }
+        if m.body_weldid()[b] == 0 && has_plane_or_hfield(m, b) {
+            return Ok(false);
+        }
+        bodies[n] = b as u64;
+        masks[n] = (u64::from(t as u32) << 32) | u64::from(a as u32);
+        n += 1;
+    }
+    let unpack = |k: u64| ((k >> 32) as u32 as i32, k as u32 as i32);
+    let start = pairs.n;
+    let mut tests = 0;
+    for i in 0..n {
+        let (b1, masks1) = (bodies[i] as usize, unpack(masks[i]));
+        for j in i + 1..n {
+            let b2 = bodies[j] as usize;
+            if !can_pair(masks1, unpack(masks[j]))
+                || welds_filtered(m, m.body_weldid()[b1], m.body_weldid()[b2])
+            {
+                continue;
+            }
+            let signature = (((b1 + 1) << 16) + b2 + 1) as i32;
+            if m.raw.nexclude > 0 && m.exclude_signature().binary_search(&signature).is_ok() {
+                continue;
+            }
+            match frameless_pair(m, d, geoms(b1), geoms(b2), &mut tests) {
+                Some(true) => pairs.add(m, true, b1, b2)?,
+                Some(false) => {}
+                None => {
+                    pairs.n = start;
+                    return Ok(false);
+                }
+            }
+        }
+    }
+    Ok(true)
+}
+
+/// One pair of swept bodies for `pairs_without_frame`: Some(true) when listed in every frame,
+/// Some(false) when it can give no contact, None when neither is certain (or the tests run out).
+fn frameless_pair(
+    m: &Model,
+    d: &Data,
+    geoms1: std::ops::Range<usize>,
+    geoms2: std::ops::Range<usize>,
+    tests: &mut usize,
+) -> Option<bool> {
+    let (rbound, margin) = (m.geom_rbound(), m.geom_margin());
+    let (contype, conaffinity) = (m.geom_contype(), m.geom_conaffinity());
+    let mut apart = true;
+    for g1 in geoms1 {
+        let p1 = row::<3>(d.geom_xpos, g1);
+        let r1 = rbound[g1] + margin[g1];
+        for g2 in geoms2.clone() {
+            *tests += 1;
+            if *tests > MAX_FRAMELESS_TESTS {
+                return None;
+            }
+            let p2 = row::<3>(d.geom_xpos, g2);
+            let r2 = rbound[g2] + margin[g2];
+            let dif = sub3(&p1, &p2);
+            let dist2 = dot3(&dif, &dif);
+            // far more than the rounding of the boxes' bounds (their f32 keys included)
+            let scale = p1.iter().chain(&p2).fold(r1 + r2, |s, x| s.max(x.abs()));
+            let slack = 1e-6 * scale;
+            let overlap = r1 + r2 - slack;
+            if overlap > 0.0 && dist2 < overlap * overlap {
+                return Some(true);
+            }
+            let masks = (
+                (contype[g1], conaffinity[g1]),
+                (contype[g2], conaffinity[g2]),
+            );
+            if apart && can_pair(masks.0, masks.1) {
+                apart = dynamic_pair_apart(m, d, g1, g2);
+            }
+        }
+    }
+    apart.then_some(false)
+}
+
 /// Candidate body pairs into `pair` (from the arena), sorted by signature; returns their count.
 pub fn broadphase<'a>(
     m: &Model,
@@ -186,7 +321,14 @@ fn sweep_and_prune(
 ) -> Result<(), EngineError> {
     let nbody = m.raw.nbody as usize;
     let aabb = a.alloc(6 * nbody)?;
-    let count = (1..nbody).filter(|&b| can_collide(m, b)).count();
+    // the swept bodies, and the masks of all their geoms together
+    let (mut count, mut contype, mut conaffinity) = (0, 0, 0);
+    for b in 1..nbody {
+        let (t, a) = body_masks(m, b);
+        if t != 0 || a != 0 {
+            (count, contype, conaffinity) = (count + 1, contype | t, conaffinity | a);
+        }
+    }
     if count == 0 {
         return Ok(());
     }
@@ -198,6 +340,14 @@ fn sweep_and_prune(
     let active = a.alloc_u64_stale(2 * count)?;
     if count == 1 {
         // a lone body pairs with nobody here, whatever the frame: skip finding it
+        return Ok(());
+    }
+    // no two swept geoms' masks match: the collision loop skips whatever the sweep lists
+    // (unless a user contact filter is to see each pair)
+    if contype & conaffinity == 0 && !hooks::contact_filter_set() {
+        return Ok(());
+    }
+    if count <= MAX_FRAMELESS_BODIES && pairs_without_frame(m, d, pairs, entries, active)? {
         return Ok(());
     }
     let frame = principal_frame(m, d);

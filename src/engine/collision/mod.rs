@@ -45,7 +45,7 @@ fn plane_dist(d: &Data, plane: usize, g: usize) -> f64 {
 /// body pair and a geom at a time. This is its test of the weld bodies: true discards every
 /// geom pair of the two.
 #[inline]
-fn welds_filtered(m: &Model, w1: i32, w2: i32) -> bool {
+pub(super) fn welds_filtered(m: &Model, w1: i32, w2: i32) -> bool {
     let wparent = |w: i32| m.body_weldid()[m.body_parentid()[w as usize] as usize];
     if w1 == w2 {
         return true;
@@ -55,7 +55,7 @@ fn welds_filtered(m: &Model, w1: i32, w2: i32) -> bool {
 }
 
 /// Can geoms of these (contype, conaffinity) masks collide (the built-in filter's mask test)?
-fn can_pair((ct1, ca1): (i32, i32), (ct2, ca2): (i32, i32)) -> bool {
+pub(super) fn can_pair((ct1, ca1): (i32, i32), (ct2, ca2): (i32, i32)) -> bool {
     ct1 & ca2 != 0 || ct2 & ca1 != 0
 }
 
@@ -164,6 +164,31 @@ enum Source {
     Dynamic { filtered: bool },
 }
 
+/// The bounding-sphere test of mj_collideGeoms: true when the geoms (g1 of the lower type) are
+/// farther apart than their bounding radii and the margin.
+#[inline]
+fn spheres_apart(m: &Model, d: &Data, g1: usize, g2: usize, margin: f64) -> bool {
+    let (r1, r2) = (m.geom_rbound()[g1], m.geom_rbound()[g2]);
+    r1 > 0.0
+        && r2 > 0.0
+        && vec3::dist3(&row(d.geom_xpos, g1), &row(d.geom_xpos, g2)) > r1 + r2 + margin
+}
+
+/// Can this dynamic geom pair give no contact, whatever the broad phase says (no collider for
+/// its types, or apart by mj_collideGeoms's bounding-sphere test)?
+pub(super) fn dynamic_pair_apart(m: &Model, d: &Data, g1: usize, g2: usize) -> bool {
+    let (g1, g2) = if m.geom_type()[g1] > m.geom_type()[g2] {
+        (g2, g1)
+    } else {
+        (g1, g2)
+    };
+    if !narrow::has_collider(m.geom_type()[g1], m.geom_type()[g2]) {
+        return true;
+    }
+    let margin = assign_margin(m, m.geom_margin()[g1].max(m.geom_margin()[g2]));
+    spheres_apart(m, d, g1, g2, margin)
+}
+
 /// Tests one geom pair (mj_collideGeoms).
 /// Returns Ok(false) when the contact buffer is full (2.2.2 stops adding then).
 /// `top`: the stack in use (a user contact filter allocates above it).
@@ -203,10 +228,7 @@ fn collide_geoms(
     };
     let margin = assign_margin(m, margin);
     let (r1, r2) = (m.geom_rbound()[g1], m.geom_rbound()[g2]);
-    if r1 > 0.0
-        && r2 > 0.0
-        && vec3::dist3(&row(d.geom_xpos, g1), &row(d.geom_xpos, g2)) > r1 + r2 + margin
-    {
+    if spheres_apart(m, d, g1, g2, margin) {
         return Ok(true);
     }
     let plane = mjtGeom_::mjGEOM_PLANE as i32;
