@@ -109,6 +109,15 @@ impl<'m> Data<'m> {
         }
     }
 
+    /// Runs a core function on this data's views (unit tests of the engine).
+    #[cfg(test)]
+    pub(crate) fn with_core<R>(
+        &mut self,
+        f: impl FnOnce(&view::Model, &mut view::Data) -> Result<R, EngineError>,
+    ) -> Result<R, Error> {
+        self.run("test", f)
+    }
+
     /// Advances the simulation one time step (`mj_step`).
     pub fn step(&mut self) -> Result<(), Error> {
         self.run("mj_step", forward::step)

@@ -150,6 +150,25 @@ fn principal_frame(m: &Model, d: &Data) -> Mat3 {
     eig3(&cov).eigvec
 }
 
+/// Always sweep in the principal frame (the tests compare the two ways).
+#[cfg(test)]
+fn sweep_only() -> bool {
+    super::tests::SWEEP_ONLY.with(|f| f.get())
+}
+#[cfg(not(test))]
+#[inline(always)]
+fn sweep_only() -> bool {
+    false
+}
+
+#[cfg(test)]
+fn frameless_taken() {
+    super::tests::FRAMELESS.with(|n| n.set(n.get() + 1));
+}
+#[cfg(not(test))]
+#[inline(always)]
+fn frameless_taken() {}
+
 /// Most swept bodies, and geom pairs tested, with which `pairs_without_frame` is tried.
 const MAX_FRAMELESS_BODIES: usize = 8;
 const MAX_FRAMELESS_TESTS: usize = 32;
@@ -344,11 +363,15 @@ fn sweep_and_prune(
     }
     // no two swept geoms' masks match: the collision loop skips whatever the sweep lists
     // (unless a user contact filter is to see each pair)
-    if contype & conaffinity == 0 && !hooks::contact_filter_set() {
-        return Ok(());
-    }
-    if count <= MAX_FRAMELESS_BODIES && pairs_without_frame(m, d, pairs, entries, active)? {
-        return Ok(());
+    if !sweep_only() {
+        if contype & conaffinity == 0 && !hooks::contact_filter_set() {
+            frameless_taken();
+            return Ok(());
+        }
+        if count <= MAX_FRAMELESS_BODIES && pairs_without_frame(m, d, pairs, entries, active)? {
+            frameless_taken();
+            return Ok(());
+        }
     }
     let frame = principal_frame(m, d);
     for b in 1..nbody {

@@ -292,3 +292,98 @@ fn heightfield_collision() {
     };
     assert_eq!(convex_hfield(&hf, &ground, &high, 0.0, &opt, &mut con), 0);
 }
+
+thread_local! {
+    /// Set: the broad phase always sweeps in the principal frame.
+    pub static SWEEP_ONLY: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+    /// Times the broad phase found its pairs without the frame.
+    pub static FRAMELESS: std::cell::Cell<usize> = const { std::cell::Cell::new(0) };
+}
+
+/// The broad phase's pairs found without the principal frame give the contacts of 2.2.2's
+/// sweep, bit for bit: random poses of free bodies and joints on our two test models (self
+/// collisions, masks, an exclude, an explicit pair, margins, the contact override) and on the
+/// first with self collisions masked out, partly and wholly.
+#[test]
+fn frameless_broadphase_gives_the_sweeps_contacts() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("models/extra");
+    let pairs = std::fs::read_to_string(dir.join("frameless_pairs.xml")).unwrap();
+    let over = std::fs::read_to_string(dir.join("frameless_override.xml")).unwrap();
+    let masked = pairs.replace(
+        "contype=\"1\" conaffinity=\"1\"",
+        "contype=\"1\" conaffinity=\"0\"",
+    );
+    // no two swept geoms' masks match, the floor's still do
+    let apart = masked
+        .replace("conaffinity=\"3\"", "conaffinity=\"0\"")
+        .replace("conaffinity=\"2\"", "conaffinity=\"0\"")
+        .replace(
+            "contype=\"2\" conaffinity=\"1\"",
+            "contype=\"2\" conaffinity=\"0\"",
+        )
+        .replace("type=\"plane\"", "type=\"plane\" conaffinity=\"3\"");
+    assert!(masked != pairs && apart != masked);
+    let mut seed = 12345u64;
+    let mut uniform = move || {
+        seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (seed >> 11) as f64 / (1u64 << 53) as f64
+    };
+    for xml in [&pairs, &over, &masked, &apart] {
+        let model = crate::api::Model::from_xml_str(xml).unwrap();
+        let mut data = model.make_data().unwrap();
+        let arrays = model.arrays();
+        let swept_affinity = (arrays.geom_bodyid().iter().zip(arrays.geom_conaffinity()))
+            .filter(|(&b, _)| b != 0)
+            .fold(0, |a, (_, &c)| a | c);
+        assert_eq!(swept_affinity == 0, std::ptr::eq(xml, &apart));
+        let (nq, qpos0) = (model.raw().nq as usize, data.qpos().to_vec());
+        FRAMELESS.with(|n| n.set(0));
+        let mut touching = 0;
+        for _ in 0..400 {
+            // poses from resting on one another to well apart
+            let q: Vec<f64> = (0..nq)
+                .map(|i| qpos0[i] + 0.6 * (uniform() - 0.5))
+                .collect();
+            let mut contacts = Vec::new();
+            for sweep in [false, true] {
+                // (kinematics normalizes the quaternions in qpos)
+                data.qpos_mut().copy_from_slice(&q);
+                SWEEP_ONLY.with(|f| f.set(sweep));
+                let found = data
+                    .with_core(|m, d| {
+                        crate::engine::kinematics::kinematics(m, d)?;
+                        super::collision(m, d)?;
+                        let con = &d.contact[..d.raw.ncon as usize];
+                        Ok(con.iter().map(|c| format!("{c:?}")).collect::<Vec<_>>())
+                    })
+                    .unwrap();
+                contacts.push(found);
+            }
+            SWEEP_ONLY.with(|f| f.set(false));
+            assert_eq!(contacts[0], contacts[1]);
+            SWEEP_ONLY.with(|f| f.set(false));
+            if contacts[0] != contacts[1] {
+                for (x, y) in contacts[0].iter().zip(&contacts[1]) {
+                    if x != y {
+                        panic!("{}\n{x}\n{y}", &xml[..60]);
+                    }
+                }
+            }
+            SWEEP_ONLY.with(|f| f.set(false));
+            if contacts[0] != contacts[1] {
+                let g = |v: &Vec<String>| -> Vec<String> {
+                    v.iter()
+                        .map(|c| {
+                            c[c.find("geom1").unwrap()..c.find(", exclude").unwrap()].to_string()
+                        })
+                        .collect()
+                };
+                panic!("{:?}\n{:?}", g(&contacts[0]), g(&contacts[1]));
+            }
+            touching += contacts[0].len();
+        }
+        assert!(FRAMELESS.with(|n| n.get()) > 100 && touching > 100);
+    }
+}
