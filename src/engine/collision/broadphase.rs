@@ -277,8 +277,8 @@ fn frameless_pair(
             let dif = sub3(&p1, &p2);
             let dist2 = dot3(&dif, &dif);
             // far more than the rounding of the boxes' bounds (their f32 keys included)
-            let scale = p1.iter().chain(&p2).fold(r1 + r2, |s, x| s.max(x.abs()));
-            let slack = 1e-6 * scale;
+            let scale: f64 = p1.iter().chain(&p2).map(|x| x.abs()).sum();
+            let slack = 1e-6 * (scale + r1 + r2);
             let overlap = r1 + r2 - slack;
             if overlap > 0.0 && dist2 < overlap * overlap {
                 return Some(true);
