@@ -176,13 +176,15 @@ const MAX_FRAMELESS_TESTS: usize = 32;
 /// The swept pairs that matter, found without the principal frame (2.2.2 computes it in every
 /// step: an iterative eigen-decomposition): a pair of swept bodies whose geoms' bounding
 /// spheres (with margins, as in the boxes) overlap by more than any rounding is in the sweep's
-/// list in every frame; a pair the collision loop filters out, or whose every geom pair fails
-/// mj_collideGeoms's bounding-sphere test, gives no contact whether listed or not. When every
-/// pair is one or the other, the first kind are the pairs, and the contacts are the sweep's.
-/// False (nothing added) when some pair is in between, a user contact filter is to see every
-/// listed pair, a swept body also pairs with all bodies (its pairs would be listed twice), or
-/// some position is not finite or too large for the sweep's f32 keys. `bodies` and `masks`:
-/// scratch of at least one slot per swept body.
+/// list in every frame; a pair whose geoms' masks or weld bodies the collision loop filters
+/// out, or whose every geom pair fails mj_collideGeoms's bounding-sphere test, gives no contact
+/// whether listed or not. (An excluded pair is tested as any other: the loop's merge with the
+/// exclude list, which it reads as sorted, decides for it.) When every pair is one or the
+/// other, the first kind are the pairs, and the contacts are the sweep's. False (nothing added)
+/// when some pair is in between, a user contact filter is to see every listed pair, a swept
+/// body also pairs with all bodies (its pairs would be listed twice), or some position is not
+/// finite or too large for the sweep's f32 keys. `bodies` and `masks`: scratch of at least one
+/// slot per swept body.
 fn pairs_without_frame(
     m: &Model,
     d: &Data,
@@ -233,10 +235,6 @@ fn pairs_without_frame(
             if !can_pair(masks1, unpack(masks[j]))
                 || welds_filtered(m, m.body_weldid()[b1], m.body_weldid()[b2])
             {
-                continue;
-            }
-            let signature = (((b1 + 1) << 16) + b2 + 1) as i32;
-            if m.raw.nexclude > 0 && m.exclude_signature().binary_search(&signature).is_ok() {
                 continue;
             }
             match frameless_pair(m, d, geoms(b1), geoms(b2), &mut tests) {
