@@ -798,8 +798,7 @@ fn place_hessian_rows(
 ) {
     let nv = m.raw.nv as usize;
     let (pattern, rest) = colind.split_at_mut(staged);
-    let room = rest.len().checked_sub(nv);
-    let counted = room.and_then(|len| {
+    let counted = rest.len().checked_sub(nv).and_then(|len| {
         let (work, count) = rest.split_at_mut(len);
         chol_sparse_counts(
             nv,

@@ -10,26 +10,30 @@ use crate::engine::linalg::row;
 use crate::engine::{Data, EngineError, Model};
 use crate::math::eig3::eig3;
 use crate::math::vec3::{dot3, sub3};
+use crate::math::Mat3;
 
 use super::{can_pair, dynamic_pair_apart, welds_filtered};
-use crate::math::Mat3;
 
 /// Does the body have a geom with contype or conaffinity?
 pub fn can_collide(m: &Model, b: usize) -> bool {
     body_masks(m, b) != (0, 0)
 }
 
+/// The geoms of a body.
+fn body_geoms(m: &Model, b: usize) -> std::ops::Range<usize> {
+    let adr = m.body_geomadr()[b].max(0) as usize;
+    adr..adr + m.body_geomnum()[b].max(0) as usize
+}
+
 /// The contype and conaffinity masks of all of a body's geoms together.
 fn body_masks(m: &Model, b: usize) -> (i32, i32) {
-    let adr = m.body_geomadr()[b].max(0) as usize;
-    (adr..adr + m.body_geomnum()[b].max(0) as usize).fold((0, 0), |(t, a), g| {
+    body_geoms(m, b).fold((0, 0), |(t, a), g| {
         (t | m.geom_contype()[g], a | m.geom_conaffinity()[g])
     })
 }
 
 fn has_plane_or_hfield(m: &Model, b: usize) -> bool {
-    let adr = m.body_geomadr()[b].max(0) as usize;
-    (adr..adr + m.body_geomnum()[b].max(0) as usize).any(|g| {
+    body_geoms(m, b).any(|g| {
         let t = m.geom_type()[g];
         t == mjtGeom_::mjGEOM_PLANE as i32 || t == mjtGeom_::mjGEOM_HFIELD as i32
     })
@@ -97,8 +101,7 @@ pub fn merge_sort<T: Copy>(items: &mut [T], tmp: &mut [T], le: &impl Fn(&T, &T) 
 /// Bounding box of a body's geoms (with margins) along the rows of `frame`: (min, max) per axis.
 fn body_aabb(m: &Model, d: &Data, b: usize, frame: &Mat3) -> [f64; 6] {
     let mut aabb = [0.0; 6];
-    let adr = m.body_geomadr()[b].max(0) as usize;
-    for (i, g) in (adr..adr + m.body_geomnum()[b].max(0) as usize).enumerate() {
+    for (i, g) in body_geoms(m, b).enumerate() {
         let pos = row::<3>(d.geom_xpos, g);
         let r = m.geom_rbound()[g] + m.geom_margin()[g];
         for j in 0..3 {
@@ -196,10 +199,6 @@ fn pairs_without_frame(
         return Ok(false);
     }
     let nbody = m.raw.nbody as usize;
-    let geoms = |b: usize| {
-        let adr = m.body_geomadr()[b].max(0) as usize;
-        adr..adr + m.body_geomnum()[b].max(0) as usize
-    };
     let (rbound, margin) = (m.geom_rbound(), m.geom_margin());
     const LARGE: f64 = 1e30;
     // the swept bodies, each with the masks of all its geoms together (no pair of masks
@@ -210,7 +209,7 @@ fn pairs_without_frame(
         if t == 0 && a == 0 {
             continue;
         }
-        for g in geoms(b) {
+        for g in body_geoms(m, b) {
             let p = row::<3>(d.geom_xpos, g);
             if !(p.iter().all(|x| x.abs() < LARGE)
                 && (0.0..LARGE).contains(&(rbound[g] + margin[g])))
@@ -237,7 +236,7 @@ fn pairs_without_frame(
             {
                 continue;
             }
-            match frameless_pair(m, d, geoms(b1), geoms(b2), &mut tests) {
+            match frameless_pair(m, d, body_geoms(m, b1), body_geoms(m, b2), &mut tests) {
                 Some(true) => pairs.add(m, true, b1, b2)?,
                 Some(false) => {}
                 None => {
@@ -359,9 +358,9 @@ fn sweep_and_prune(
         // a lone body pairs with nobody here, whatever the frame: skip finding it
         return Ok(());
     }
-    // no two swept geoms' masks match: the collision loop skips whatever the sweep lists
-    // (unless a user contact filter is to see each pair)
     if !sweep_only() {
+        // no two swept geoms' masks match: the collision loop skips whatever the sweep lists
+        // (unless a user contact filter is to see each pair)
         if contype & conaffinity == 0 && !hooks::contact_filter_set() {
             frameless_taken();
             return Ok(());
