@@ -2,6 +2,7 @@
 
 use super::linalg::{add_to, dot6, row};
 use super::support::warning;
+use super::tree::DofPathRev;
 use super::{Data, EngineError, Model, MINVAL};
 use crate::abi::{mjData, mjtWarning_};
 use crate::math::*;
@@ -217,17 +218,11 @@ fn solve_ld1(m: &Model, x: &mut [f64], qld: &[f64], diag_inv: &[f64]) {
     let nv = m.raw.nv as usize;
     let (simple, madr, parent) = (m.dof_simplenum(), m.dof_Madr(), m.dof_parentid());
     let x = &mut x[..nv];
+    let mut rev = DofPathRev::new();
     for i in (0..nv).rev() {
         let tmp = x[i];
         if simple[i] == 0 && tmp != 0.0 {
-            let mut adr = madr[i] as usize + 1;
-            let mut j = parent[i];
-            while j >= 0 {
-                let ju = j as usize;
-                x[ju] -= qld[adr] * tmp;
-                adr += 1;
-                j = parent[ju];
-            }
+            scatter_up(x, &qld[madr[i] as usize + 1..], i, parent, &mut rev, tmp);
         }
     }
     for (xi, di) in x.iter_mut().zip(&diag_inv[..nv]) {
@@ -246,6 +241,27 @@ fn solve_ld1(m: &Model, x: &mut [f64], qld: &[f64], diag_inv: &[f64]) {
             }
             x[i] = tmp;
         }
+    }
+}
+
+/// x(j) -= l(t) * s for the ancestors j of dof i, nearest first, with dofs visited in
+/// decreasing order (i's ancestors from `rev`, or through dof_parentid where it has none).
+#[inline(always)]
+fn scatter_up(x: &mut [f64], l: &[f64], i: usize, parent: &[i32], rev: &mut DofPathRev, s: f64) {
+    if let Some(a) = rev.enter(i, parent) {
+        for (&l, &j) in l[..a.len()].iter().zip(a.iter().rev()) {
+            x[j as usize] -= l * s;
+        }
+        return;
+    }
+    let mut j = parent[i];
+    for &l in l {
+        if j < 0 {
+            break;
+        }
+        let ju = j as usize;
+        x[ju] -= l * s;
+        j = parent[ju];
     }
 }
 
@@ -274,17 +290,11 @@ pub fn solve_m2(m: &Model, x: &mut [f64], y: &[f64], n: usize, qld: &[f64], sqrt
     let (simple, madr, parent) = (m.dof_simplenum(), m.dof_Madr(), m.dof_parentid());
     for v in 0..n {
         let x = &mut x[v * nv..(v + 1) * nv];
+        let mut rev = DofPathRev::new();
         for i in (0..nv).rev() {
             let tmp = x[i];
             if simple[i] == 0 && tmp != 0.0 {
-                let mut adr = madr[i] as usize + 1;
-                let mut j = parent[i];
-                while j >= 0 {
-                    let ju = j as usize;
-                    x[ju] -= qld[adr] * tmp;
-                    adr += 1;
-                    j = parent[ju];
-                }
+                scatter_up(x, &qld[madr[i] as usize + 1..], i, parent, &mut rev, tmp);
             }
         }
         for i in 0..nv {

@@ -1,6 +1,7 @@
 //! Jacobians of points and frames; products with the sparse inertia matrix.
 
 use super::linalg::{add_to_scl, row};
+use super::tree::DofPath;
 use super::{Data, EngineError, Model};
 use crate::abi::view::Arena;
 use crate::math::*;
@@ -156,13 +157,23 @@ pub fn mul_m(m: &Model, qm: &[f64], res: &mut [f64], vec: &[f64]) {
     let (madr, simple, parent) = (m.dof_Madr(), m.dof_simplenum(), m.dof_parentid());
     let (res, vec) = (&mut res[..nv], &vec[..nv]);
     res.fill(0.0);
+    let mut path = DofPath::new();
     for i in 0..nv {
         let adr = madr[i] as usize;
         let vi = vec[i];
+        let ancestors = path.enter(i, parent[i]);
         if simple[i] != 0 {
             res[i] = qm[adr] * vi;
+            continue;
+        }
+        let mut ri = res[i] + qm[adr] * vi;
+        if let Some(a) = ancestors {
+            for (&q, &j) in qm[adr + 1..adr + 1 + a.len()].iter().zip(a.iter().rev()) {
+                let ju = j as usize;
+                ri += q * vec[ju];
+                res[ju] += q * vi;
+            }
         } else {
-            let mut ri = res[i] + qm[adr] * vi;
             let mut j = parent[i];
             for &q in &qm[adr + 1..] {
                 if j < 0 {
@@ -173,8 +184,8 @@ pub fn mul_m(m: &Model, qm: &[f64], res: &mut [f64], vec: &[f64]) {
                 res[ju] += q * vi;
                 j = parent[ju];
             }
-            res[i] = ri;
         }
+        res[i] = ri;
     }
 }
 

@@ -30,6 +30,7 @@ pub mod solver_dual;
 pub mod support;
 pub mod tendon;
 pub mod transmission;
+pub mod tree;
 pub mod velocity;
 
 pub use crate::abi::view::{Data, EngineError, Model};

@@ -1,0 +1,146 @@
+//! The dofs' tree walked in dof order with each dof's ancestors at hand, so that loops over
+//! ancestors read an array instead of chasing dof_parentid one load after another.
+
+/// Deepest path kept; below it the callers follow dof_parentid.
+const DEPTH: usize = 64;
+
+/// Dofs lie in depth-first order (`abi::consistency` checks it at load), so the ancestors of
+/// each dof in turn are the path from its root down to its parent: a stack.
+pub struct DofPath {
+    path: [u32; DEPTH],
+    len: usize,
+}
+
+impl DofPath {
+    pub fn new() -> Self {
+        DofPath {
+            path: [0; DEPTH],
+            len: 0,
+        }
+    }
+
+    /// Moves to dof `i`, whose parent is `parent`, and gives its ancestors, the root first;
+    /// None where the path is not known (deeper than DEPTH, or the order is not depth-first),
+    /// and then up to the next root.
+    #[inline(always)]
+    pub fn enter(&mut self, i: usize, parent: i32) -> Option<&[u32]> {
+        if parent < 0 {
+            self.len = 0;
+        } else {
+            while self.len > 0 && self.path[self.len - 1] != parent as u32 {
+                self.len -= 1;
+            }
+            if self.len == 0 {
+                return None;
+            }
+        }
+        if self.len == DEPTH {
+            return None;
+        }
+        self.path[self.len] = i as u32;
+        self.len += 1;
+        Some(&self.path[..self.len - 1])
+    }
+}
+
+/// The same for dofs visited in decreasing order: moving to a dof pops the path back to its
+/// nearest ancestor on it and pushes the rest of its ancestors, found through dof_parentid
+/// (each dof is pushed once a walk).
+pub struct DofPathRev {
+    path: [u32; DEPTH],
+    len: usize,
+}
+
+impl DofPathRev {
+    pub fn new() -> Self {
+        DofPathRev {
+            path: [0; DEPTH],
+            len: 0,
+        }
+    }
+
+    /// Moves to dof `i` and gives its ancestors, the root first; None where the tree is
+    /// deeper than DEPTH there.
+    #[inline(always)]
+    pub fn enter(&mut self, i: usize, parent: &[i32]) -> Option<&[u32]> {
+        // climb to the path, popping what is not on the way; then write the climb downwards
+        let mut n = 0;
+        let mut x = i as i32;
+        loop {
+            while self.len > 0 && self.path[self.len - 1] as i32 > x {
+                self.len -= 1;
+            }
+            if x < 0 || (self.len > 0 && self.path[self.len - 1] as i32 == x) {
+                break;
+            }
+            n += 1;
+            if self.len + n > DEPTH {
+                self.len = 0;
+                return None;
+            }
+            x = parent[x as usize];
+        }
+        let mut x = i as u32;
+        for k in (self.len..self.len + n).rev() {
+            self.path[k] = x;
+            x = parent[x as usize] as u32;
+        }
+        self.len += n;
+        Some(&self.path[..self.len - 1])
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn ancestors(parent: &[i32], i: usize) -> Vec<u32> {
+        let mut a = Vec::new();
+        let mut j = parent[i];
+        while j >= 0 {
+            a.push(j as u32);
+            j = parent[j as usize];
+        }
+        a.reverse();
+        a
+    }
+
+    #[test]
+    fn path_gives_the_ancestors_or_nothing() {
+        // two trees, branches, a chain deeper than DEPTH, and a dof out of depth-first order
+        let mut parent = vec![-1, 0, 1, 1, 3, 0, -1, 6];
+        let deep = parent.len();
+        parent.push(-1);
+        for k in 1..DEPTH + 5 {
+            parent.push((deep + k - 1) as i32);
+        }
+        parent.push(deep as i32 + 2);
+        parent.push(2);
+        parent.push(-1);
+        parent.push(parent.len() as i32 - 1);
+        let mut path = DofPath::new();
+        let mut known = 0;
+        for (i, &p) in parent.iter().enumerate() {
+            match path.enter(i, p) {
+                Some(a) => {
+                    assert_eq!(a, &ancestors(&parent, i)[..], "dof {i}");
+                    known += 1;
+                }
+                None => assert!(ancestors(&parent, i).len() >= DEPTH || i >= deep + DEPTH),
+            }
+        }
+        assert_eq!(known, parent.len() - 7);
+        let mut rev = DofPathRev::new();
+        let mut known = 0;
+        for i in (0..parent.len()).rev() {
+            match rev.enter(i, &parent) {
+                Some(a) => {
+                    assert_eq!(a, &ancestors(&parent, i)[..], "dof {i}");
+                    known += 1;
+                }
+                None => assert!(ancestors(&parent, i).len() >= DEPTH),
+            }
+        }
+        assert_eq!(known, parent.len() - 5);
+    }
+}
