@@ -2,7 +2,7 @@
 
 use super::linalg::{add_to, dot6, row};
 use super::support::warning;
-use super::tree::DofPathRev;
+use super::tree::{deep, DofPathRev};
 use super::{Data, EngineError, Model, MINVAL};
 use crate::abi::{mjData, mjtWarning_};
 use crate::math::*;
@@ -218,13 +218,7 @@ fn solve_ld1(m: &Model, x: &mut [f64], qld: &[f64], diag_inv: &[f64]) {
     let nv = m.raw.nv as usize;
     let (simple, madr, parent) = (m.dof_simplenum(), m.dof_Madr(), m.dof_parentid());
     let x = &mut x[..nv];
-    let mut rev = DofPathRev::new();
-    for i in (0..nv).rev() {
-        let tmp = x[i];
-        if simple[i] == 0 && tmp != 0.0 {
-            scatter_up(x, &qld[madr[i] as usize + 1..], i, parent, &mut rev, tmp);
-        }
-    }
+    scatter_to_ancestors(m, x, qld);
     for (xi, di) in x.iter_mut().zip(&diag_inv[..nv]) {
         *xi *= di;
     }
@@ -244,24 +238,56 @@ fn solve_ld1(m: &Model, x: &mut [f64], qld: &[f64], diag_inv: &[f64]) {
     }
 }
 
-/// x(j) -= l(t) * s for the ancestors j of dof i, nearest first, with dofs visited in
-/// decreasing order (i's ancestors from `rev`, or through dof_parentid where it has none).
+/// x = inv(L') * x: each dof from the last, x(j) -= L(i,j) * x(i) for its ancestors j.
 #[inline(always)]
-fn scatter_up(x: &mut [f64], l: &[f64], i: usize, parent: &[i32], rev: &mut DofPathRev, s: f64) {
-    if let Some(a) = rev.enter(i, parent) {
-        for (&l, &j) in l[..a.len()].iter().zip(a.iter().rev()) {
-            x[j as usize] -= l * s;
-        }
-        return;
+fn scatter_to_ancestors(m: &Model, x: &mut [f64], qld: &[f64]) {
+    let nv = m.raw.nv as usize;
+    if deep(nv, m.raw.nM as usize, PULL_DEPTH) {
+        return scatter_to_ancestors_on_path(m, x, qld);
     }
-    let mut j = parent[i];
-    for &l in l {
-        if j < 0 {
-            break;
+    let (simple, madr, parent) = (m.dof_simplenum(), m.dof_Madr(), m.dof_parentid());
+    for i in (0..nv).rev() {
+        let tmp = x[i];
+        if simple[i] == 0 && tmp != 0.0 {
+            let mut adr = madr[i] as usize + 1;
+            let mut j = parent[i];
+            while j >= 0 {
+                let ju = j as usize;
+                x[ju] -= qld[adr] * tmp;
+                adr += 1;
+                j = parent[ju];
+            }
         }
-        let ju = j as usize;
-        x[ju] -= l * s;
-        j = parent[ju];
+    }
+}
+
+/// `scatter_to_ancestors` in deep trees, the ancestors read from a `DofPathRev`.
+#[inline(never)]
+fn scatter_to_ancestors_on_path(m: &Model, x: &mut [f64], qld: &[f64]) {
+    let nv = m.raw.nv as usize;
+    let (simple, madr, parent) = (m.dof_simplenum(), m.dof_Madr(), m.dof_parentid());
+    let mut rev = DofPathRev::new();
+    for i in (0..nv).rev() {
+        let tmp = x[i];
+        if simple[i] != 0 || tmp == 0.0 {
+            continue;
+        }
+        let l = &qld[madr[i] as usize + 1..];
+        if let Some(a) = rev.enter(i, parent) {
+            for (&l, &j) in l[..a.len()].iter().zip(a.iter().rev()) {
+                x[j as usize] -= l * tmp;
+            }
+        } else {
+            let mut j = parent[i];
+            for &l in l {
+                if j < 0 {
+                    break;
+                }
+                let ju = j as usize;
+                x[ju] -= l * tmp;
+                j = parent[ju];
+            }
+        }
     }
 }
 
@@ -287,16 +313,9 @@ pub fn solve_ld(
 pub fn solve_m2(m: &Model, x: &mut [f64], y: &[f64], n: usize, qld: &[f64], sqrt_inv: &[f64]) {
     let nv = m.raw.nv as usize;
     x[..n * nv].copy_from_slice(&y[..n * nv]);
-    let (simple, madr, parent) = (m.dof_simplenum(), m.dof_Madr(), m.dof_parentid());
     for v in 0..n {
         let x = &mut x[v * nv..(v + 1) * nv];
-        let mut rev = DofPathRev::new();
-        for i in (0..nv).rev() {
-            let tmp = x[i];
-            if simple[i] == 0 && tmp != 0.0 {
-                scatter_up(x, &qld[madr[i] as usize + 1..], i, parent, &mut rev, tmp);
-            }
-        }
+        scatter_to_ancestors(m, x, qld);
         for i in 0..nv {
             x[i] *= sqrt_inv[i];
         }

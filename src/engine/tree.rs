@@ -4,11 +4,24 @@
 /// Deepest path kept; below it the callers follow dof_parentid.
 const DEPTH: usize = 64;
 
+/// Whether keeping the path pays in a tree whose sparse inertia has `nm` entries over `nv`
+/// dofs: where rows hold at least `per_dof` entries on average. In shallow trees (cheetah,
+/// walker: about five) the bookkeeping costs more than the loads it saves.
+pub fn deep(nv: usize, nm: usize, per_dof: usize) -> bool {
+    nm >= per_dof * nv
+}
+
 /// Dofs lie in depth-first order (`abi::consistency` checks it at load), so the ancestors of
 /// each dof in turn are the path from its root down to its parent: a stack.
 pub struct DofPath {
     path: [u32; DEPTH],
     len: usize,
+}
+
+impl Default for DofPath {
+    fn default() -> Self {
+        Self::new()
+    }
 }
 
 impl DofPath {
@@ -49,6 +62,12 @@ impl DofPath {
 pub struct DofPathRev {
     path: [u32; DEPTH],
     len: usize,
+}
+
+impl Default for DofPathRev {
+    fn default() -> Self {
+        Self::new()
+    }
 }
 
 impl DofPathRev {
