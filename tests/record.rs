@@ -25,15 +25,22 @@ fn record(model: &str, seconds: &str, lib: Lib, display: &str, out: &Path) -> Ve
     if lib == Lib::Ours {
         envs.push(("LD_LIBRARY_PATH", &libdir));
     }
-    let o = run(
-        Path::new(RECORD),
-        &[model, seconds, "30", &out.to_string_lossy()],
-        &envs,
-        600,
-    );
+    let args = [model, seconds, "30", &out.to_string_lossy()];
+    let mut o = run(Path::new(RECORD), &args, &envs, 600);
+    // a window the X server did not give (GLFW's error, through mju_error's exit(1) with
+    // the message on stdout: seen once under load) is the machine's, not the library's:
+    // asked again, at most twice
+    for _ in 0..2 {
+        let said = text(&o.stdout);
+        if !said.contains("GLFW") || out.exists() {
+            break;
+        }
+        eprintln!("mujoco-record {model} on {lib:?}: {}; again", said.trim());
+        o = run(Path::new(RECORD), &args, &envs, 600);
+    }
     // record.cc ends main with `return 1` after a complete recording
     assert!(
-        o.status.code() == Some(1) && o.stderr.is_empty(),
+        o.status.code() == Some(1) && o.stderr.is_empty() && out.exists(),
         "mujoco-record {model} on {lib:?} failed: {}{}",
         text(&o.stdout),
         text(&o.stderr)
