@@ -166,18 +166,8 @@ pub fn mul_m(m: &Model, qm: &[f64], res: &mut [f64], vec: &[f64]) {
         if simple[i] != 0 {
             res[i] = qm[adr] * vi;
         } else {
-            let mut ri = res[i] + qm[adr] * vi;
-            let mut j = parent[i];
-            for &q in &qm[adr + 1..] {
-                if j < 0 {
-                    break;
-                }
-                let ju = j as usize;
-                ri += q * vec[ju];
-                res[ju] += q * vi;
-                j = parent[ju];
-            }
-            res[i] = ri;
+            let ri = res[i] + qm[adr] * vi;
+            res[i] = by_parents(&qm[adr + 1..], parent[i], parent, vec, res, vi, ri);
         }
     }
 }
@@ -207,19 +197,34 @@ fn mul_m_on_path(m: &Model, qm: &[f64], res: &mut [f64], vec: &[f64]) {
                 res[ju] += q * vi;
             }
         } else {
-            let mut j = parent[i];
-            for &q in &qm[adr + 1..] {
-                if j < 0 {
-                    break;
-                }
-                let ju = j as usize;
-                ri += q * vec[ju];
-                res[ju] += q * vi;
-                j = parent[ju];
-            }
+            ri = by_parents(&qm[adr + 1..], parent[i], parent, vec, res, vi, ri);
         }
         res[i] = ri;
     }
+}
+
+/// The rest of a row of mj_mulM, its ancestors found through dof_parentid from `j`:
+/// ri += M(i,j) * vec(j) and res(j) += M(i,j) * vec(i) in turn; gives ri.
+#[inline(always)]
+fn by_parents(
+    row: &[f64],
+    mut j: i32,
+    parent: &[i32],
+    vec: &[f64],
+    res: &mut [f64],
+    vi: f64,
+    mut ri: f64,
+) -> f64 {
+    for &q in row {
+        if j < 0 {
+            break;
+        }
+        let ju = j as usize;
+        ri += q * vec[ju];
+        res[ju] += q * vi;
+        j = parent[ju];
+    }
+    ri
 }
 
 /// res = M^(1/2) * vec using the factorization (mj_mulM2).
