@@ -2,7 +2,7 @@
 
 use super::linalg::{add_to, dot6, row};
 use super::support::warning;
-use super::tree::{deep, DofPathRev};
+use super::tree::{deep, DofPath};
 use super::{Data, EngineError, Model, MINVAL};
 use crate::abi::{mjData, mjtWarning_};
 use crate::math::*;
@@ -249,45 +249,44 @@ fn scatter_to_ancestors(m: &Model, x: &mut [f64], qld: &[f64]) {
     for i in (0..nv).rev() {
         let tmp = x[i];
         if simple[i] == 0 && tmp != 0.0 {
-            let mut adr = madr[i] as usize + 1;
-            let mut j = parent[i];
-            while j >= 0 {
-                let ju = j as usize;
-                x[ju] -= qld[adr] * tmp;
-                adr += 1;
-                j = parent[ju];
-            }
+            by_parents(x, &qld[madr[i] as usize + 1..], parent[i], parent, tmp);
         }
     }
 }
 
-/// `scatter_to_ancestors` in deep trees, the ancestors read from a `DofPathRev`.
+/// `scatter_to_ancestors` in deep trees, the ancestors read from a `DofPath`.
 #[inline(never)]
 fn scatter_to_ancestors_on_path(m: &Model, x: &mut [f64], qld: &[f64]) {
     let nv = m.raw.nv as usize;
     let (simple, madr, parent) = (m.dof_simplenum(), m.dof_Madr(), m.dof_parentid());
-    let mut rev = DofPathRev::new();
+    let mut path = DofPath::new();
     for i in (0..nv).rev() {
         let tmp = x[i];
         if simple[i] != 0 || tmp == 0.0 {
             continue;
         }
         let l = &qld[madr[i] as usize + 1..];
-        if let Some(a) = rev.enter(i, parent) {
-            for (&l, &j) in l[..a.len()].iter().zip(a.iter().rev()) {
-                x[j as usize] -= l * tmp;
-            }
-        } else {
-            let mut j = parent[i];
-            for &l in l {
-                if j < 0 {
-                    break;
+        match path.prev(i, parent) {
+            Some(a) => {
+                for (&l, &j) in l[..a.len()].iter().zip(a.iter().rev()) {
+                    x[j as usize] -= l * tmp;
                 }
-                let ju = j as usize;
-                x[ju] -= l * tmp;
-                j = parent[ju];
             }
+            None => by_parents(x, l, parent[i], parent, tmp),
         }
+    }
+}
+
+/// x(j) -= l(t) * s in turn for the ancestors j of a dof, found through dof_parentid from `j`.
+#[inline(always)]
+fn by_parents(x: &mut [f64], l: &[f64], mut j: i32, parent: &[i32], s: f64) {
+    for &l in l {
+        if j < 0 {
+            break;
+        }
+        let ju = j as usize;
+        x[ju] -= l * s;
+        j = parent[ju];
     }
 }
 

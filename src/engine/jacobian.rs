@@ -184,7 +184,7 @@ fn mul_m_on_path(m: &Model, qm: &[f64], res: &mut [f64], vec: &[f64]) {
     for i in 0..nv {
         let adr = madr[i] as usize;
         let vi = vec[i];
-        let ancestors = path.enter(i, parent[i]);
+        let ancestors = path.next(i, parent[i]);
         if simple[i] != 0 {
             res[i] = qm[adr] * vi;
             continue;

@@ -12,7 +12,8 @@ pub fn deep(nv: usize, nm: usize, per_dof: usize) -> bool {
 }
 
 /// Dofs lie in depth-first order (`abi::consistency` checks it at load), so the ancestors of
-/// each dof in turn are the path from its root down to its parent: a stack.
+/// each dof in turn are the path from its root down to its parent: a stack. A walk visits the
+/// dofs either in increasing order (`next`) or in decreasing order (`prev`), not both.
 pub struct DofPath {
     path: [u32; DEPTH],
     len: usize,
@@ -32,11 +33,11 @@ impl DofPath {
         }
     }
 
-    /// Moves to dof `i`, whose parent is `parent`, and gives its ancestors, the root first;
+    /// Moves up to dof `i`, whose parent is `parent`, and gives its ancestors, the root first;
     /// None where the path is not known (deeper than DEPTH, or the order is not depth-first),
     /// and then up to the next root.
     #[inline(always)]
-    pub fn enter(&mut self, i: usize, parent: i32) -> Option<&[u32]> {
+    pub fn next(&mut self, i: usize, parent: i32) -> Option<&[u32]> {
         if parent < 0 {
             self.len = 0;
         } else {
@@ -54,34 +55,12 @@ impl DofPath {
         self.len += 1;
         Some(&self.path[..self.len - 1])
     }
-}
 
-/// The same for dofs visited in decreasing order: moving to a dof pops the path back to its
-/// nearest ancestor on it and pushes the rest of its ancestors, found through dof_parentid
-/// (each dof is pushed once a walk).
-pub struct DofPathRev {
-    path: [u32; DEPTH],
-    len: usize,
-}
-
-impl Default for DofPathRev {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-
-impl DofPathRev {
-    pub fn new() -> Self {
-        DofPathRev {
-            path: [0; DEPTH],
-            len: 0,
-        }
-    }
-
-    /// Moves to dof `i` and gives its ancestors, the root first; None where the tree is
-    /// deeper than DEPTH there.
+    /// Moves down to dof `i` and gives its ancestors, the root first: pops the path back to
+    /// i's nearest ancestor on it and pushes the rest, found through dof_parentid (each dof is
+    /// pushed once a walk). None where the tree is deeper than DEPTH there.
     #[inline(always)]
-    pub fn enter(&mut self, i: usize, parent: &[i32]) -> Option<&[u32]> {
+    pub fn prev(&mut self, i: usize, parent: &[i32]) -> Option<&[u32]> {
         // climb to the path, popping what is not on the way; then write the climb downwards
         let mut n = 0;
         let mut x = i as i32;
@@ -140,7 +119,7 @@ mod tests {
         let mut path = DofPath::new();
         let mut known = 0;
         for (i, &p) in parent.iter().enumerate() {
-            match path.enter(i, p) {
+            match path.next(i, p) {
                 Some(a) => {
                     assert_eq!(a, &ancestors(&parent, i)[..], "dof {i}");
                     known += 1;
@@ -149,10 +128,10 @@ mod tests {
             }
         }
         assert_eq!(known, parent.len() - 7);
-        let mut rev = DofPathRev::new();
+        let mut rev = DofPath::new();
         let mut known = 0;
         for i in (0..parent.len()).rev() {
-            match rev.enter(i, &parent) {
+            match rev.prev(i, &parent) {
                 Some(a) => {
                     assert_eq!(a, &ancestors(&parent, i)[..], "dof {i}");
                     known += 1;
