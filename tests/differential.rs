@@ -38,6 +38,13 @@ fn results() -> &'static (PathBuf, PathBuf) {
             run(&bin.join("harness-ours"), &["replay", model, &d], &[], 300);
             let full = run(&bin.join("harness-ref"), &["compare", &d, "-v"], &[], 120);
             std::fs::write(dir.join("report.txt"), &full.stdout).unwrap();
+            // a passing model's dumps (gigabytes over the list) go; a failing one's stay
+            if full.status.success() {
+                for f in ["ours", "ref"] {
+                    let _ = std::fs::remove_dir_all(dir.join(f));
+                }
+                let _ = std::fs::remove_file(dir.join("states.bin"));
+            }
         });
         let summary: String = models()
             .iter()
