@@ -3,7 +3,8 @@
 Builds rujoco (cargo) when its library is missing or older than its sources, fetches the
 bindings' sdist from PyPI (or takes RUJOCO_MUJOCO_SDIST), builds it against rujoco's headers and
 library with Debian's abseil, Eigen and pybind11, and returns the wheel of the package `mujoco`
-2.2.2 with rujoco's libmujoco.so.2.2.2 inside.
+2.2.2 with rujoco's libmujoco.so.2.2.2 inside (on x86-64 also its x86-64-v3 build, in
+mujoco/glibc-hwcaps/x86-64-v3/, which the loader takes on a CPU that has AVX2).
 """
 
 import glob
@@ -69,14 +70,60 @@ def _newest_source(root):
     return newest
 
 
+HWCAPS_V3 = os.path.join("glibc-hwcaps", "x86-64-v3")
+
+
 def _rujoco_library():
+    """The baseline library; its x86-64-v3 build (AVX2) beside it on x86-64, in the
+    glibc-hwcaps/ directory where the loader takes it on a CPU that has AVX2."""
     lib = os.path.join(_target_dir(), "release", "libmujoco.so")
-    if not os.path.exists(lib) or os.path.getmtime(lib) < _newest_source(ROOT):
+    v3 = _v3_library()
+    newest = _newest_source(ROOT)
+
+    def older(path, than):
+        return not os.path.exists(path) or os.path.getmtime(path) < than
+
+    if older(lib, newest) or (v3 and older(v3, os.path.getmtime(lib))):
         cargo = shutil.which("cargo") or os.path.expanduser("~/.cargo/bin/cargo")
         if not os.path.exists(cargo):
             raise RuntimeError("cargo not found: install Rust (https://rustup.rs)")
         _run([cargo, "build", "--release"], cwd=ROOT)
+        if v3:
+            _run([cargo, "xtask", "hwcaps"], cwd=ROOT)
     return lib
+
+
+def _v3_library():
+    """Where `cargo xtask hwcaps` puts the x86-64-v3 build; None off x86-64 Linux."""
+    if sys.platform != "linux" or os.uname().machine != "x86_64":
+        return None
+    return os.path.join(_target_dir(), "release", HWCAPS_V3, f"libmujoco.so.{VERSION}")
+
+
+def _add_to_wheel(wheel, files):
+    """Rewrites the wheel with `files` ({path in the wheel: file}) added and listed in RECORD."""
+    import base64
+    import hashlib
+    import zipfile
+    tmp = wheel + ".tmp"
+    with zipfile.ZipFile(wheel) as src, zipfile.ZipFile(tmp, "w", zipfile.ZIP_DEFLATED) as dst:
+        record = None
+        for item in src.infolist():
+            if item.filename.endswith(".dist-info/RECORD"):
+                record = (item, src.read(item).decode())
+            else:
+                dst.writestr(item, src.read(item))
+        lines = record[1].rstrip("\n").split("\n")
+        for name, path in files.items():
+            data = open(path, "rb").read()
+            info = zipfile.ZipInfo(name, date_time=(1980, 1, 1, 0, 0, 0))
+            info.external_attr = 0o755 << 16
+            info.compress_type = zipfile.ZIP_DEFLATED
+            dst.writestr(info, data)
+            digest = base64.urlsafe_b64encode(hashlib.sha256(data).digest()).rstrip(b"=")
+            lines.insert(len(lines) - 1, f"{name},sha256={digest.decode()},{len(data)}")
+        dst.writestr(record[0], "\n".join(lines) + "\n")
+    os.replace(tmp, wheel)
 
 
 def _sdist(work):
@@ -159,6 +206,9 @@ def build_wheel(wheel_directory, config_settings=None, metadata_directory=None):
     shutil.rmtree(out, ignore_errors=True)
     _run([sys.executable, "setup.py", "-q", "bdist_wheel", "-d", out], cwd=src, env=env)
     wheel = glob.glob(os.path.join(out, f"mujoco-{VERSION}-*.whl"))[0]
+    v3 = None if other else _v3_library()
+    if v3:
+        _add_to_wheel(wheel, {f"mujoco/{HWCAPS_V3}/libmujoco.so.{VERSION}": v3})
     shutil.copy(wheel, wheel_directory)
     return os.path.basename(wheel)
 

@@ -133,6 +133,14 @@ fn exports_every_reference_symbol() {
         .map(|s| s.0)
         .collect();
     let ours: BTreeSet<String> = api_symbols(&our_lib()).into_iter().map(|s| s.0).collect();
+    if let Some(v3) = our_v3_lib() {
+        let same = api_symbols(&v3)
+            .into_iter()
+            .map(|s| s.0)
+            .collect::<BTreeSet<_>>()
+            == ours;
+        assert!(same, "the x86-64-v3 build exports other symbols");
+    }
     let missing: Vec<&String> = reference.difference(&ours).collect();
     report(
         "symbols",
@@ -152,16 +160,19 @@ fn exports_every_reference_symbol() {
 
 #[test]
 fn soname_is_2_2_2() {
-    let o = Command::new("readelf")
-        .arg("-d")
-        .arg(our_lib())
-        .output()
-        .expect("readelf (binutils) missing");
-    let t = text(&o.stdout);
-    assert!(
-        t.contains("Library soname: [libmujoco.so.2.2.2]"),
-        "SONAME is not libmujoco.so.2.2.2:\n{t}"
-    );
+    for lib in std::iter::once(our_lib()).chain(our_v3_lib()) {
+        let o = Command::new("readelf")
+            .arg("-d")
+            .arg(&lib)
+            .output()
+            .expect("readelf (binutils) missing");
+        let t = text(&o.stdout);
+        assert!(
+            t.contains("Library soname: [libmujoco.so.2.2.2]"),
+            "SONAME of {} is not libmujoco.so.2.2.2:\n{t}",
+            lib.display()
+        );
+    }
     assert!(
         lib_dir().join("libmujoco.so.2.2.2").exists(),
         "target/release/libmujoco.so.2.2.2 link missing"

@@ -176,3 +176,68 @@ fn harness_self_check() {
         }
     });
 }
+
+/// The library the loader picks for `prog` (`ld.so --list`), with `mask` as
+/// `--glibc-hwcaps-mask` when given.
+fn loaded_library(prog: &std::path::Path, mask: Option<&str>) -> String {
+    let p = prog.to_string_lossy();
+    let mut args = vec![];
+    if let Some(m) = mask {
+        args.extend(["--glibc-hwcaps-mask", m]);
+    }
+    args.extend(["--list", &p]);
+    let out = run(std::path::Path::new(LD_SO), &args, &[], 30);
+    let list = text(&out.stdout);
+    list.lines()
+        .find(|l| l.trim_start().starts_with("libmujoco.so"))
+        .and_then(|l| l.split("=> ").nth(1))
+        .unwrap_or_else(|| panic!("no libmujoco in ld.so --list {p}:\n{list}"))
+        .to_string()
+}
+
+/// Where a CPU has AVX2, the loader takes the x86-64-v3 build (`cargo xtask hwcaps`) and every
+/// other test runs that one: the baseline build, which every other x86-64 runs, gets the whole
+/// model list here (reference recorded, ours replayed with the loader told to skip
+/// glibc-hwcaps/, compared, every group at its tolerance).
+#[test]
+fn baseline_build_on_every_model() {
+    let bin = harness_bin();
+    let ours = bin.join("harness-ours");
+    let base = lib_dir().join("libmujoco.so.2.2.2");
+    let base = base.to_string_lossy();
+    let masked = loaded_library(&ours, Some("none"));
+    assert!(masked.starts_with(&*base), "masked run loads {masked}");
+    if lib_dir().join(HWCAPS_V3).exists()
+        && std::arch::is_x86_feature_detected!("avx2")
+        && std::arch::is_x86_feature_detected!("fma")
+        && std::arch::is_x86_feature_detected!("bmi2")
+    {
+        let plain = loaded_library(&ours, None);
+        assert!(plain.contains(HWCAPS_V3), "the other tests run {plain}");
+    }
+    let dirs = work_dir("diff-baseline");
+    let failed: Vec<String> = par_map_harness(&models(), |_, model| {
+        let dir = dirs.join(stem(model));
+        let _ = std::fs::remove_dir_all(&dir);
+        let d = dir.to_string_lossy().to_string();
+        let r = run(&bin.join("harness-ref"), &["record", model, &d], &[], 300);
+        assert!(r.status.success(), "reference run failed on {model}");
+        let ours = ours.to_string_lossy();
+        let args = ["--glibc-hwcaps-mask", "none", &ours, "replay", model, &d];
+        run(std::path::Path::new(LD_SO), &args, &[], 300);
+        let c = run(&bin.join("harness-ref"), &["compare", &d], &[], 120);
+        if c.status.success() {
+            let _ = std::fs::remove_dir_all(&dir);
+            return None;
+        }
+        Some(format!("{model}:\n{}", text(&c.stdout)))
+    })
+    .into_iter()
+    .flatten()
+    .collect();
+    assert!(
+        failed.is_empty(),
+        "the baseline build differs from MuJoCo 2.2.2:\n{}",
+        failed.join("\n")
+    );
+}

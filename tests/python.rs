@@ -186,7 +186,18 @@ fn build_venv(side: Side) -> Result<PathBuf, String> {
     };
     let dest = site_packages(&venv).join("mujoco/libmujoco.so.2.2.2");
     let _ = std::fs::remove_file(&dest);
-    std::fs::copy(lib, dest).unwrap();
+    std::fs::copy(lib, &dest).unwrap();
+    // the x86-64-v3 build where the wheel carries it (the loader's pick beside $ORIGIN)
+    let v3 = dest.with_file_name(HWCAPS_V3).join("libmujoco.so.2.2.2");
+    if side == Side::Ours && our_v3_lib().is_some() {
+        assert!(v3.exists(), "the wheel holds no {HWCAPS_V3} build");
+    }
+    if v3.exists() {
+        let _ = std::fs::remove_file(&v3);
+        if let (Side::Ours, Some(built)) = (side, our_v3_lib()) {
+            std::fs::copy(built, &v3).unwrap();
+        }
+    }
     Ok(py)
 }
 

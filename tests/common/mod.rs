@@ -20,10 +20,47 @@ pub fn target_dir() -> PathBuf {
         .unwrap_or_else(|| root().join("target"))
 }
 
-/// Directory of our built library (target/release).
+/// Directory of our built library (target/release); fails the test when the x86-64-v3 copy
+/// beside it (`cargo xtask hwcaps`), which the loader takes on a CPU with AVX2, is older.
 pub fn lib_dir() -> PathBuf {
-    target_dir().join("release")
+    let dir = target_dir().join("release");
+    let age = |p: PathBuf| std::fs::metadata(p).and_then(|m| m.modified()).ok();
+    if let (Some(base), Some(v3)) = (
+        age(dir.join("libmujoco.so")),
+        age(dir.join(HWCAPS_V3).join("libmujoco.so.2.2.2")),
+    ) {
+        assert!(
+            v3 >= base,
+            "{} is older than target/release/libmujoco.so: run `cargo xtask hwcaps`",
+            dir.join(HWCAPS_V3).display()
+        );
+    }
+    dir
 }
+
+/// Where the loader finds the x86-64-v3 build beside the baseline one.
+pub const HWCAPS_V3: &str = "glibc-hwcaps/x86-64-v3";
+
+/// Our x86-64-v3 build (`cargo xtask hwcaps`), when there is one.
+pub fn our_v3_lib() -> Option<PathBuf> {
+    Some(lib_dir().join(HWCAPS_V3).join("libmujoco.so.2.2.2")).filter(|p| p.exists())
+}
+
+/// The file of ours a program linked against target/release loads on this CPU: the x86-64-v3
+/// build where the loader supports that level (as `ld.so --help` lists it), else the baseline.
+/// For programs that dlopen a path.
+pub fn loaded_lib() -> PathBuf {
+    let help = Command::new(LD_SO).arg("--help").output();
+    let v3 = help.is_ok_and(|o| text(&o.stdout).contains("x86-64-v3 (supported"));
+    match our_v3_lib() {
+        Some(p) if v3 => p,
+        _ => our_lib(),
+    }
+}
+
+/// The dynamic loader, to run a program with `--glibc-hwcaps-mask` (the baseline library
+/// on any CPU).
+pub const LD_SO: &str = "/lib64/ld-linux-x86-64.so.2";
 
 /// Our shared library; fails the test when it has not been built.
 pub fn our_lib() -> PathBuf {

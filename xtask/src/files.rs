@@ -45,6 +45,13 @@ pub fn install_set(root: &Path, release: &Path, libdir: &str) -> Vec<InstallFile
         rel: format!("{libdir}/{so}"),
         content: Content::Copy(release.join("libmujoco.so")),
     });
+    let v3 = release.join(crate::HWCAPS_V3).join(&so);
+    if v3.exists() {
+        out.push(InstallFile {
+            rel: format!("{libdir}/{}/{so}", crate::HWCAPS_V3),
+            content: Content::Copy(v3),
+        });
+    }
     out.push(InstallFile {
         rel: format!("{libdir}/libmujoco.so"),
         content: Content::Link(so),

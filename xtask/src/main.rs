@@ -8,6 +8,9 @@
 //! - `deb`: a Debian package in target/debian/ that stands in for libmujoco2.2.2 and
 //!   libmujoco-dev.
 //! - `pgo`: records the profile the release build is optimized with (`pgo/rujoco.profdata`).
+//! - `hwcaps`: builds the library again for x86-64-v3 (AVX2) beside target/release's, in
+//!   `glibc-hwcaps/x86-64-v3/`, where glibc's loader takes it on a CPU that has AVX2 (install
+//!   and deb build it and install it there too).
 //!
 //! `--no-build` takes target/release as it is (the tests use it).
 
@@ -26,7 +29,8 @@ fn usage() -> ! {
         "usage: cargo xtask install --prefix DIR [--libdir DIR] [--no-build]\n       \
          cargo xtask uninstall --prefix DIR [--libdir DIR]\n       \
          cargo xtask deb [--no-build]\n       \
-         cargo xtask pgo"
+         cargo xtask pgo\n       \
+         cargo xtask hwcaps"
     );
     exit(2)
 }
@@ -114,6 +118,44 @@ fn build() {
             .current_dir(root()),
         "cargo build --release",
     );
+    hwcaps();
+}
+
+/// Where glibc's loader looks, beside a library's directory, for the copy built for x86-64-v3
+/// (AVX2), and takes it on a CPU that has the level.
+const HWCAPS_V3: &str = "glibc-hwcaps/x86-64-v3";
+
+/// Where cargo builds the x86-64-v3 library (its own target directory: other flags).
+fn hwcaps_build_dir() -> PathBuf {
+    target_dir().join("x86-64-v3")
+}
+
+/// The library built again for x86-64-v3, into target/release/glibc-hwcaps/x86-64-v3/. The
+/// same arithmetic (Rust never fuses a product and a sum), in wider registers. The flag goes to
+/// rujoco's own compilation only (`cargo rustc`): build scripts and dependencies stay baseline,
+/// so the build runs on any x86-64, and rujoco's symbols keep the names the recorded profile
+/// (pgo/) knows them by.
+fn hwcaps() {
+    if !cfg!(all(target_arch = "x86_64", target_os = "linux")) {
+        return;
+    }
+    let work = hwcaps_build_dir();
+    must(
+        cargo()
+            .args(["rustc", "--release", "--package", "rujoco", "--lib"])
+            .args(["--", "-Ctarget-cpu=x86-64-v3"])
+            .env("CARGO_TARGET_DIR", &work)
+            .current_dir(root()),
+        "the x86-64-v3 build",
+    );
+    let built = work.join("release/libmujoco.so");
+    let dir = target_dir().join("release").join(HWCAPS_V3);
+    std::fs::create_dir_all(&dir).unwrap_or_else(|e| fail(&dir.display().to_string(), e));
+    let dst = dir.join(format!("libmujoco.so.{VERSION}"));
+    // a new file (not copied over the old one, which a running program may have mapped)
+    let tmp = dir.join(".libmujoco.so.tmp");
+    std::fs::copy(&built, &tmp).unwrap_or_else(|e| fail(&built.display().to_string(), e));
+    std::fs::rename(&tmp, &dst).unwrap_or_else(|e| fail(&dst.display().to_string(), e));
 }
 
 fn fail(what: &str, e: std::io::Error) -> ! {
@@ -247,6 +289,7 @@ fn main() {
         Some("deb") if args.len() == 1 => deb(false),
         Some("deb") if args.len() == 2 && args[1] == "--no-build" => deb(true),
         Some("pgo") if args.len() == 1 => pgo::pgo(),
+        Some("hwcaps") if args.len() == 1 => hwcaps(),
         _ => usage(),
     }
 }

@@ -1,13 +1,14 @@
 //! `cargo xtask pgo`: records the profile the release build is optimized with
 //! (`pgo/rujoco.profdata`, applied by `pgo/rustc` through `.cargo/config.toml`).
 //!
-//! Builds an instrumented library into target/pgo, runs `capi-tests/pgo_train.c` on it once per
+//! Builds an instrumented library into target/pgo (and on a CPU with AVX2 its x86-64-v3 build,
+//! `cargo xtask hwcaps`, into target/pgo-v3), runs `capi-tests/pgo_train.c` on each once per
 //! model file (ours under models/, and the corpus when present: `RUJOCO_CORPUS`, else
 //! ../shared/corpus), merges the counts with the toolchain's llvm-profdata (`rustup component
 //! add llvm-tools`), lists the sources the profile belongs to in pgo/sources.txt and that
 //! LLVM's major version in pgo/llvm-major (pgo/rustc uses the profile from it on). Only rujoco
-//! runs: no other library is involved. target/release is cleaned afterwards: cargo does not see
-//! a new profile by itself.
+//! runs: no other library is involved. target/release and the x86-64-v3 build's directory are
+//! cleaned afterwards: cargo does not see a new profile by itself.
 
 use std::path::{Path, PathBuf};
 use std::process::{exit, Command, Stdio};
@@ -23,11 +24,13 @@ const LIMIT: Duration = Duration::from_secs(60);
 
 pub fn pgo() {
     let root = root();
-    let work = target_dir().join("pgo");
-    let raw = work.join("raw");
     let (profdata, llvm_major) = llvm_profdata();
+    // the sources the profile belongs to, read before the run (tests/speed.rs compares)
+    let digests = source_digests(&root);
 
     // the instrumented library (pgo/rustc adds no profile next to -Cprofile-generate)
+    let work = target_dir().join("pgo");
+    let raw = work.join("raw");
     must(
         cargo()
             .args(["build", "--release", "--package", "rujoco", "--lib"])
@@ -36,9 +39,55 @@ pub fn pgo() {
             .current_dir(&root),
         "the instrumented build",
     );
+    let mut raws = vec![train(&work, &raw)];
+    // the x86-64-v3 build (`cargo xtask hwcaps`) as well, where this CPU runs it: a few
+    // functions branch differently there, and their counts go in under their own hash
+    if v3_runs_here() {
+        let work = target_dir().join("pgo-v3");
+        let raw = work.join("raw");
+        let generate = format!("-Cprofile-generate={}", raw.display());
+        must(
+            cargo()
+                .args(["rustc", "--release", "--package", "rujoco", "--lib", "--"])
+                .args([generate.as_str(), "-Ctarget-cpu=x86-64-v3"])
+                .env("CARGO_TARGET_DIR", &work)
+                .current_dir(&root),
+            "the instrumented x86-64-v3 build",
+        );
+        raws.push(train(&work, &raw));
+    }
+
+    let out = root.join("pgo/rujoco.profdata");
+    std::fs::create_dir_all(out.parent().unwrap()).unwrap_or_else(|e| fail("pgo", e));
+    must(
+        Command::new(&profdata)
+            .arg("merge")
+            .arg("-o")
+            .arg(&out)
+            .args(&raws),
+        "llvm-profdata merge",
+    );
+    std::fs::write(root.join("pgo/sources.txt"), digests)
+        .unwrap_or_else(|e| fail("pgo/sources.txt", e));
+    // an older LLVM cannot read the profile: pgo/rustc leaves it out there
+    std::fs::write(root.join("pgo/llvm-major"), format!("{llvm_major}\n"))
+        .unwrap_or_else(|e| fail("pgo/llvm-major", e));
+    println!("{}", out.display());
+    // the crates built on the old profile are rebuilt on the new one (cargo does not track it)
+    let _ = cargo()
+        .args(["clean", "--release"])
+        .current_dir(&root)
+        .status();
+    let _ = std::fs::remove_dir_all(crate::hwcaps_build_dir());
+}
+
+/// Runs capi-tests/pgo_train.c on the instrumented library in `work`/release once per model
+/// file; returns `raw`, the directory of its counts.
+fn train(work: &Path, raw: &Path) -> PathBuf {
+    let root = root();
     // counts of the build's own programs (build scripts) are not the library's
-    let _ = std::fs::remove_dir_all(&raw);
-    std::fs::create_dir_all(&raw).unwrap_or_else(|e| fail("target/pgo/raw", e));
+    let _ = std::fs::remove_dir_all(raw);
+    std::fs::create_dir_all(raw).unwrap_or_else(|e| fail(&raw.display().to_string(), e));
     let lib = work.join("release");
     let train = work.join("pgo_train");
     must(
@@ -53,9 +102,6 @@ pub fn pgo() {
             .arg("-lm"),
         "compiling capi-tests/pgo_train.c",
     );
-
-    // the sources the profile belongs to, read before the run (tests/speed.rs compares)
-    let digests = source_digests(&root);
     let models = models(&root);
     let start = Instant::now();
     let mut stopped = 0;
@@ -65,34 +111,31 @@ pub fn pgo() {
         }
     }
     println!(
-        "xtask: {} model files run in {:.0} s ({} stopped after {} s)",
+        "xtask: {} model files run in {:.0} s on {} ({} stopped after {} s)",
         models.len(),
         start.elapsed().as_secs_f64(),
+        lib.display(),
         stopped,
         LIMIT.as_secs()
     );
+    raw.to_path_buf()
+}
 
-    let out = root.join("pgo/rujoco.profdata");
-    std::fs::create_dir_all(out.parent().unwrap()).unwrap_or_else(|e| fail("pgo", e));
-    must(
-        Command::new(&profdata)
-            .arg("merge")
-            .arg("-o")
-            .arg(&out)
-            .arg(&raw),
-        "llvm-profdata merge",
-    );
-    std::fs::write(root.join("pgo/sources.txt"), digests)
-        .unwrap_or_else(|e| fail("pgo/sources.txt", e));
-    // an older LLVM cannot read the profile: pgo/rustc leaves it out there
-    std::fs::write(root.join("pgo/llvm-major"), format!("{llvm_major}\n"))
-        .unwrap_or_else(|e| fail("pgo/llvm-major", e));
-    println!("{}", out.display());
-    // the crates built on the old profile are rebuilt on the new one (cargo does not track it)
-    let _ = cargo()
-        .args(["clean", "--release"])
-        .current_dir(&root)
-        .status();
+/// Does this CPU run x86-64-v3 code (the features of that level)?
+fn v3_runs_here() -> bool {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::is_x86_feature_detected as has;
+        has!("avx2")
+            && has!("fma")
+            && has!("bmi1")
+            && has!("bmi2")
+            && has!("lzcnt")
+            && has!("movbe")
+            && has!("f16c")
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    false
 }
 
 /// The toolchain's own llvm-profdata (the raw format follows rustc's LLVM) and the major
