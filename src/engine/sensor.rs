@@ -5,7 +5,7 @@
 use super::linalg::{clip, min, mul_mat_t_vec, row};
 use super::ray::{ray, ray_among, ray_geom, Targets};
 use super::rne::rne_post_constraint;
-use super::support::{contact_force, object_acceleration, object_frame, object_velocity};
+use super::support::{contact_force, frame_arrays, object_acceleration, object_velocity};
 use super::velocity::subtree_vel;
 use super::{disabled, enabled, Data, EngineError, Model};
 use crate::abi::*;
@@ -21,15 +21,15 @@ fn is(ty: i32, s: mjtSensor_) -> bool {
 }
 
 /// Object position and orientation of a frame sensor's object or reference.
-fn frame(
-    m: &Model,
-    d: &Data,
+fn frame<'d>(
+    d: &'d Data,
     objtype: i32,
     id: i32,
     sensor: usize,
-) -> Result<(Vec3, Mat3), EngineError> {
-    match object_frame(m, d, objtype, id.max(0) as usize) {
-        Some((_, pos, mat)) => Ok((pos, mat)),
+) -> Result<(&'d [f64], &'d [f64]), EngineError> {
+    let id = id.max(0) as usize;
+    match frame_arrays(d, objtype) {
+        Some((pos, mat)) => Ok((&pos[3 * id..3 * id + 3], &mat[9 * id..9 * id + 9])),
         None => Err(EngineError(format!(
             "Invalid object type in sensor {sensor}"
         ))),
@@ -137,23 +137,24 @@ pub fn sensor_pos(m: &Model, d: &mut Data) -> Result<(), EngineError> {
             || is(ty, mjSENS_FRAMEYAXIS)
             || is(ty, mjSENS_FRAMEZAXIS)
         {
-            let (pos, mat) = frame(m, d, objtype, objid, i)?;
-            let axis = |k: usize| [mat[k], mat[k + 3], mat[k + 6]];
+            // read in place: copying each frame out whole cost more than the sensor
+            let (pos, mat) = frame(d, objtype, objid, i)?;
             let v = if is(ty, mjSENS_FRAMEPOS) {
-                pos
+                [pos[0], pos[1], pos[2]]
             } else {
-                axis((ty - mjSENS_FRAMEXAXIS as i32) as usize)
+                let k = (ty - mjSENS_FRAMEXAXIS as i32) as usize;
+                [mat[k], mat[k + 3], mat[k + 6]]
             };
             let v = if refid == -1 {
                 v
             } else {
-                let (rpos, rmat) = frame(m, d, reftype, refid, i)?;
+                let (rpos, rmat) = frame(d, reftype, refid, i)?;
                 let v = if is(ty, mjSENS_FRAMEPOS) {
-                    sub3(&v, &rpos)
+                    sub3(&v, &row(rpos, 0))
                 } else {
                     v
                 };
-                mul_mat_t_vec3(&rmat, &v)
+                mul_mat_t_vec3(&row(rmat, 0), &v)
             };
             put_vec(d, adr, &v);
         } else if is(ty, mjSENS_FRAMEQUAT) {
@@ -231,8 +232,9 @@ pub fn sensor_vel(m: &Model, d: &mut Data) -> Result<(), EngineError> {
         } else if is(ty, mjSENS_FRAMELINVEL) || is(ty, mjSENS_FRAMEANGVEL) {
             let mut v = object_velocity(m, d, objtype, id, false)?;
             if refid > -1 {
-                let (pos, _) = frame(m, d, objtype, objid, i)?;
-                let (rpos, rmat) = frame(m, d, reftype, refid, i)?;
+                let pos: Vec3 = row(frame(d, objtype, objid, i)?.0, 0);
+                let (rpos, rmat) = frame(d, reftype, refid, i)?;
+                let (rpos, rmat): (Vec3, Mat3) = (row(rpos, 0), row(rmat, 0));
                 let vref = object_velocity(m, d, reftype, refid as usize, false)?;
                 let mut rel = [0.0; 6];
                 for k in 0..6 {

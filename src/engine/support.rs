@@ -372,16 +372,29 @@ pub fn energy_vel(m: &Model, d: &mut Data) -> Result<(), EngineError> {
 /// site, camera); None for other object types.
 pub fn object_frame(m: &Model, d: &Data, objtype: i32, id: usize) -> Option<(usize, Vec3, Mat3)> {
     use mjtObj_::*;
-    let t = |o: mjtObj_| o as i32;
-    let (body, pos, mat) = match objtype {
-        x if x == t(mjOBJ_BODY) => (id, d.xipos as &[f64], d.ximat as &[f64]),
-        x if x == t(mjOBJ_XBODY) => (id, &*d.xpos, &*d.xmat),
-        x if x == t(mjOBJ_GEOM) => (m.geom_bodyid()[id] as usize, &*d.geom_xpos, &*d.geom_xmat),
-        x if x == t(mjOBJ_SITE) => (m.site_bodyid()[id] as usize, &*d.site_xpos, &*d.site_xmat),
-        x if x == t(mjOBJ_CAMERA) => (m.cam_bodyid()[id] as usize, &*d.cam_xpos, &*d.cam_xmat),
-        _ => return None,
+    let (pos, mat) = frame_arrays(d, objtype)?;
+    let body = match objtype {
+        x if x == mjOBJ_GEOM as i32 => m.geom_bodyid()[id] as usize,
+        x if x == mjOBJ_SITE as i32 => m.site_bodyid()[id] as usize,
+        x if x == mjOBJ_CAMERA as i32 => m.cam_bodyid()[id] as usize,
+        _ => id,
     };
     Some((body, row(pos, id), row(mat, id)))
+}
+
+/// Global positions (3 a row) and orientations (9 a row) of the objects of a type with a
+/// spatial frame (body: its inertial frame, xbody, geom, site, camera); None for other types.
+pub fn frame_arrays<'d>(d: &'d Data, objtype: i32) -> Option<(&'d [f64], &'d [f64])> {
+    use mjtObj_::*;
+    let t = |o: mjtObj_| o as i32;
+    match objtype {
+        x if x == t(mjOBJ_BODY) => Some((d.xipos, d.ximat)),
+        x if x == t(mjOBJ_XBODY) => Some((d.xpos, d.xmat)),
+        x if x == t(mjOBJ_GEOM) => Some((d.geom_xpos, d.geom_xmat)),
+        x if x == t(mjOBJ_SITE) => Some((d.site_xpos, d.site_xmat)),
+        x if x == t(mjOBJ_CAMERA) => Some((d.cam_xpos, d.cam_xmat)),
+        _ => None,
+    }
 }
 
 /// Body, position, com of its tree and optional rotation of an object for the spatial
