@@ -1068,7 +1068,15 @@ fn elliptic_update(
         u[j] = jar[j] * friction[j - 1];
     }
     let n = u[0];
-    let t = norm(&u[1..dim]);
+    // condim 3: the norm of the two products as `norm` sums them (+0 plus a sum of squares,
+    // never -0, is that sum), from registers: a vector load of `u` just stored element by
+    // element waits for the stores
+    let t = if dim == 3 {
+        let (u1, u2) = (jar[1] * friction[0], jar[2] * friction[1]);
+        (u1 * u1 + u2 * u2).sqrt()
+    } else {
+        norm(&u[1..dim])
+    };
     let st;
     if n >= mu * t || (t <= 0.0 && n >= 0.0) {
         force.fill(0.0);
