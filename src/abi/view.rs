@@ -61,6 +61,21 @@ macro_rules! model_views {
             )*
         }
 
+        impl<'a> Model<'a> {
+            /// `mesh_vert` as points (x, y, z).
+            #[inline(always)]
+            pub fn mesh_vert_xyz(&self) -> &'a [[f32; 3]] {
+                // SAFETY: `new`'s contract: mesh_vert holds 3 * nmeshvert floats; [f32; 3] has
+                // their alignment and no padding.
+                unsafe {
+                    array_ref(
+                        self.raw.mesh_vert.cast::<[f32; 3]>(),
+                        self.raw.nmeshvert.max(0) as usize,
+                    )
+                }
+            }
+        }
+
         impl<'a> ModelMut<'a> {
             /// # Safety
             /// `m` must come from `mj_makeModel`; the arrays must not be aliased elsewhere.

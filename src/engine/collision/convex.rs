@@ -16,8 +16,8 @@ use crate::math::{Mat3, Vec3, MINVAL};
 /// Vertices and (optional) hill-climbing graph of a convex mesh.
 #[derive(Clone, Copy, Debug)]
 pub struct MeshData<'a> {
-    /// This mesh's vertices (mesh_vert from mesh_vertadr), 3 per vertex.
-    pub vert: &'a [f32],
+    /// This mesh's vertices (mesh_vert from mesh_vertadr).
+    pub vert: &'a [[f32; 3]],
     /// mesh_graph from this mesh's mesh_graphadr, when the mesh has a graph.
     pub graph: Option<&'a [i32]>,
 }
@@ -49,8 +49,46 @@ pub struct MprOptions {
 }
 
 #[inline]
-fn vdot(d: &Vec3, v: &[f32], i: usize) -> f64 {
-    d[0] * v[3 * i] as f64 + d[1] * v[3 * i + 1] as f64 + d[2] * v[3 * i + 2] as f64
+fn vdot(d: &Vec3, v: &[[f32; 3]], i: usize) -> f64 {
+    let p = &v[i];
+    d[0] * p[0] as f64 + d[1] * p[1] as f64 + d[2] * p[2] as f64
+}
+
+/// Hill climb on a mesh's hull graph from hull vertex 0, 2.2.2's path: scan the current
+/// vertex's neighbours in order, taking each one strictly better than the best so far, then
+/// go on from the last taken. Returns the best vertex's local and global index.
+fn climb(dir: &Vec3, v: &[[f32; 3]], graph: &[i32]) -> (usize, i32) {
+    let numvert = graph[0] as usize;
+    let edgeadr = &graph[2..2 + numvert];
+    let globalid = &graph[2 + numvert..2 + 2 * numvert];
+    let localid = &graph[2 + 2 * numvert..];
+    let dot = |loc: usize| {
+        let p = &v[globalid[loc] as usize];
+        dir[0] * p[0] as f64 + dir[1] * p[1] as f64 + dir[2] * p[2] as f64
+    };
+    let (mut ibest, mut best) = (0, dot(0));
+    loop {
+        let start = ibest;
+        let mut i = edgeadr[ibest] as usize;
+        // Each improvement leaves the scan (a branch, not a select), so the next vertex's
+        // address comes from prediction instead of waiting for the dot products.
+        while let Some((loc, d)) = loop {
+            let loc = match localid.get(i) {
+                Some(&l) if l >= 0 => l as usize,
+                _ => break None,
+            };
+            i += 1;
+            let d = dot(loc);
+            if d > best {
+                break Some((loc, d));
+            }
+        } {
+            (ibest, best) = (loc, d);
+        }
+        if ibest == start {
+            return (ibest, globalid[ibest]);
+        }
+    }
 }
 
 /// Support point of the geom (inflated by margin/2) in global direction `gdir` (mjccd_support).
@@ -92,7 +130,7 @@ pub fn support(g: &ConvexGeom, gdir: &Vec3, margin: f64, meshindex: &mut i32) ->
             let best = match mesh.graph {
                 None => {
                     let (mut best, mut ibest) = (-1e10, -1i32);
-                    for i in 0..v.len() / 3 {
+                    for i in 0..v.len() {
                         let d = vdot(&dir, v, i);
                         if d > best {
                             best = d;
@@ -103,36 +141,16 @@ pub fn support(g: &ConvexGeom, gdir: &Vec3, margin: f64, meshindex: &mut i32) ->
                     ibest
                 }
                 Some(graph) => {
-                    let numvert = graph[0] as usize;
-                    let edgeadr = &graph[2..];
-                    let globalid = &graph[2 + numvert..];
-                    let localid = &graph[2 + 2 * numvert..];
-                    let mut ibest = 0usize;
-                    let mut best = vdot(&dir, v, globalid[0] as usize);
-                    let mut change = true;
-                    while change {
-                        change = false;
-                        let mut i = edgeadr[ibest] as usize;
-                        while localid[i] >= 0 {
-                            let loc = localid[i] as usize;
-                            let d = vdot(&dir, v, globalid[loc] as usize);
-                            if d > best {
-                                best = d;
-                                ibest = loc;
-                                change = true;
-                            }
-                            i += 1;
-                        }
-                    }
-                    *meshindex = ibest as i32;
-                    globalid[ibest]
+                    let (local, global) = climb(&dir, v, graph);
+                    *meshindex = local as i32;
+                    global
                 }
             };
             if best < 0 {
                 [0.0; 3]
             } else {
                 let b = best as usize;
-                [v[3 * b] as f64, v[3 * b + 1] as f64, v[3 * b + 2] as f64]
+                v[b].map(f64::from)
             }
         }
     };
@@ -424,7 +442,7 @@ pub fn plane_convex(
     let first = con[0].pos;
     let mut count = 1;
     let add = |con: &mut ContactGeom, k: usize| -> usize {
-        let vert = [v[3 * k] as f64, v[3 * k + 1] as f64, v[3 * k + 2] as f64];
+        let vert = v[k].map(f64::from);
         let pnt = add3(&mul_mat_vec3(mat2, &vert), pos2);
         if dist3(&pnt, &first) < TOLPLANEMESH * g2.rbound {
             return 0;
@@ -437,7 +455,7 @@ pub fn plane_convex(
     match mesh.graph {
         None => {
             let mut i = 0;
-            while i < v.len() / 3 && count < MAXPLANEMESH {
+            while i < v.len() && count < MAXPLANEMESH {
                 if vdot(&locdir, v, i) > threshold && i as i32 != meshindex {
                     count += add(&mut con[count], i);
                 }

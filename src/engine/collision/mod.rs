@@ -5,6 +5,7 @@
 
 use crate::engine::linalg::row;
 
+pub mod bounds;
 pub mod boxes;
 pub mod broadphase;
 pub mod convex;
@@ -174,6 +175,17 @@ fn spheres_apart(m: &Model, d: &Data, g1: usize, g2: usize, margin: f64) -> bool
         && vec3::dist3(&row(d.geom_xpos, g1), &row(d.geom_xpos, g2)) > r1 + r2 + margin
 }
 
+/// The bounding-box test (`bounds`) of geoms g1 and g2.
+fn boxes_apart(m: &Model, d: &Data, g1: usize, g2: usize, margin: f64) -> bool {
+    let bound = |g: usize| bounds::Bound {
+        pos: row(d.geom_xpos, g),
+        mat: row(d.geom_xmat, g),
+        extent: bounds::extent(m.geom_type()[g], &row(m.geom_size(), g)),
+        rbound: m.geom_rbound()[g],
+    };
+    bounds::apart(&bound(g1), &bound(g2), margin)
+}
+
 /// Can this dynamic geom pair give no contact, whatever the broad phase says (no collider for
 /// its types, or apart by mj_collideGeoms's bounding-sphere test)?
 pub(super) fn dynamic_pair_apart(m: &Model, d: &Data, g1: usize, g2: usize) -> bool {
@@ -236,6 +248,9 @@ fn collide_geoms(
         return Ok(true);
     }
     if t2 == plane && r1 > 0.0 && plane_dist(d, g2, g1) > margin + r1 {
+        return Ok(true);
+    }
+    if bounds::worth_testing(t1, t2) && boxes_apart(m, d, g1, g2, margin) {
         return Ok(true);
     }
 

@@ -37,7 +37,7 @@ fn convex_geom<'a>(m: &Model<'a>, d: &Data, g: usize) -> ConvexGeom<'a> {
             let (adr, num) = (m.mesh_vertadr()[id] as usize, m.mesh_vertnum()[id] as usize);
             let graphadr = m.mesh_graphadr()[id];
             Shape::Mesh(MeshData {
-                vert: &m.mesh_vert()[3 * adr..3 * (adr + num)],
+                vert: &m.mesh_vert_xyz()[adr..adr + num],
                 graph: (graphadr >= 0).then(|| &m.mesh_graph()[graphadr as usize..]),
             })
         }

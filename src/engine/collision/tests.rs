@@ -215,7 +215,12 @@ fn convex_collisions() {
     assert!(close(&con[0].normal(), &[0.0, 0.0, -1.0], 1e-6));
 
     // mesh tetrahedron above a plane, one vertex below it
-    let vert: [f32; 12] = [0.0, 0.0, -0.05, 0.3, 0.0, 0.1, 0.0, 0.3, 0.1, 0.1, 0.1, 0.3];
+    let vert: [[f32; 3]; 4] = [
+        [0.0, 0.0, -0.05],
+        [0.3, 0.0, 0.1],
+        [0.0, 0.3, 0.1],
+        [0.1, 0.1, 0.3],
+    ];
     let tet = ConvexGeom {
         shape: Shape::Mesh(MeshData {
             vert: &vert,
@@ -367,4 +372,106 @@ fn frameless_broadphase_gives_the_sweeps_contacts() {
         }
         assert!(FRAMELESS.with(|n| n.get()) > 100 && touching > 100);
     }
+}
+
+/// The bounding-box test skips a pair only where its routine finds no contact: random pairs of
+/// every type it covers, placed around touching, with margins.
+#[test]
+fn bounding_boxes_apart_only_without_contacts() {
+    use super::bounds::{self, Bound};
+    use super::convex::{self, ConvexGeom, MeshData, MprOptions, Shape};
+    use super::primitive::{capsule_box, ContactGeom, GeomPose};
+    use crate::engine::geom::*;
+    use crate::math::quat::{normalize4, quat2mat};
+
+    let mut seed = 12345u64;
+    let mut rnd = move || {
+        seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (seed >> 11) as f64 / (1u64 << 53) as f64
+    };
+    // a convex mesh: an irregular octahedron, and its bounding radius
+    let vert: [[f32; 3]; 6] = [
+        [0.3, 0.0, 0.0],
+        [-0.2, 0.0, 0.0],
+        [0.0, 0.25, 0.0],
+        [0.0, -0.15, 0.0],
+        [0.0, 0.0, 0.35],
+        [0.0, 0.0, -0.1],
+    ];
+    let mesh_rbound = 0.35f64 * 3f64.sqrt();
+    let opt = MprOptions {
+        iterations: 1000,
+        tolerance: 1e-6,
+    };
+    let types = [SPHERE, CAPSULE, ELLIPSOID, CYLINDER, BOX, MESH];
+    let (mut skipped, mut contacts) = (0, 0);
+    for trial in 0..40000 {
+        let (mut t1, mut t2) = (types[trial % 6], types[(trial / 6) % 6]);
+        if t1 > t2 {
+            (t1, t2) = (t2, t1);
+        }
+        if !bounds::worth_testing(t1, t2) {
+            continue;
+        }
+        let mut pose = |shift: f64| {
+            let q = [rnd() - 0.5, rnd() - 0.5, rnd() - 0.5, rnd() - 0.5];
+            GeomPose {
+                pos: [
+                    shift * (rnd() - 0.5),
+                    shift * (rnd() - 0.5),
+                    shift * (rnd() - 0.5),
+                ],
+                mat: quat2mat(&normalize4(&q).0),
+                size: [0.05 + 0.3 * rnd(), 0.05 + 0.3 * rnd(), 0.05 + 0.3 * rnd()],
+            }
+        };
+        let (p1, p2) = (pose(0.0), pose(1.2));
+        let margin = if trial % 3 == 0 { 0.0 } else { 0.05 * rnd() };
+        let shape = |t: i32| match t {
+            SPHERE => Shape::Sphere,
+            CAPSULE => Shape::Capsule,
+            ELLIPSOID => Shape::Ellipsoid,
+            CYLINDER => Shape::Cylinder,
+            BOX => Shape::Box,
+            _ => Shape::Mesh(MeshData {
+                vert: &vert,
+                graph: None,
+            }),
+        };
+        let rbound = |t: i32, p: &GeomPose| {
+            if t == MESH {
+                mesh_rbound
+            } else {
+                norm3(&bounds::extent(t, &p.size).unwrap())
+            }
+        };
+        let bound = |t: i32, p: &GeomPose| Bound {
+            pos: p.pos,
+            mat: p.mat,
+            extent: bounds::extent(t, &p.size),
+            rbound: rbound(t, p),
+        };
+        let mut con = [ContactGeom::default(); convex::MAX_CONTACT_PAIR];
+        let n = if (t1, t2) == (CAPSULE, BOX) {
+            capsule_box(&p1, &p2, margin, &mut con)
+        } else {
+            let g = |t: i32, p: &GeomPose| ConvexGeom {
+                shape: shape(t),
+                pose: *p,
+                rbound: rbound(t, p),
+            };
+            convex::convex(&g(t1, &p1), &g(t2, &p2), margin, &opt, false, &mut con)
+        };
+        contacts += (n > 0) as usize;
+        if bounds::apart(&bound(t1, &p1), &bound(t2, &p2), margin) {
+            skipped += 1;
+            assert_eq!(n, 0, "types {t1} {t2}: {p1:?} {p2:?} margin {margin}");
+        }
+    }
+    assert!(
+        skipped > 5000 && contacts > 5000,
+        "{skipped} skipped, {contacts} in contact"
+    );
 }

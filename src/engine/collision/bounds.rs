@@ -1,0 +1,77 @@
+//! A bounding-box test ahead of the costlier narrow-phase routines. Every routine reports a
+//! contact only where the two geoms come within the margin (MPR: where the geoms grown by half
+//! the margin each meet), so a pair whose boxes are farther apart than the margin along a face
+//! axis of one of them gets no contact: skipping its routine leaves every result as it was.
+
+use crate::engine::geom::*;
+use crate::math::Vec3;
+
+/// A geom's pose and bounds: half-extents of its box in its own frame where its size gives
+/// them, else its bounding radius (meshes).
+pub struct Bound {
+    pub pos: Vec3,
+    pub mat: [f64; 9],
+    pub extent: Option<Vec3>,
+    pub rbound: f64,
+}
+
+/// Half-extents of a primitive's box from its type and size.
+pub fn extent(t: i32, s: &[f64; 3]) -> Option<Vec3> {
+    match t {
+        SPHERE => Some([s[0]; 3]),
+        CAPSULE => Some([s[0], s[0], s[1] + s[0]]),
+        CYLINDER => Some([s[0], s[0], s[1]]),
+        ELLIPSOID | BOX => Some(*s),
+        _ => None,
+    }
+}
+
+/// Do these types (t1 <= t2) go to a routine worth a bounding-box test first: MPR (a mesh,
+/// ellipsoid or cylinder against a non-plane) or capsule-box? Cheap routines, box-box with its
+/// own separating-axis exits, and two meshes (no box: the bounding-sphere test has done it)
+/// are left alone.
+pub fn worth_testing(t1: i32, t2: i32) -> bool {
+    let mpr = |t: i32| matches!(t, ELLIPSOID | CYLINDER | MESH);
+    t1 >= SPHERE && t1 != MESH && (mpr(t1) || mpr(t2) || (t1 == CAPSULE && t2 == BOX))
+}
+
+/// Half-width of b's bounds along the unit axis u.
+fn radius(b: &Bound, u: &Vec3) -> f64 {
+    match b.extent {
+        Some(h) => (0..3)
+            .map(|j| h[j] * (u[0] * b.mat[j] + u[1] * b.mat[3 + j] + u[2] * b.mat[6 + j]).abs())
+            .sum(),
+        None => b.rbound,
+    }
+}
+
+/// Are a and b apart by more than `margin` along a face axis of either box? The slack covers
+/// rounding here and in the routines, and MPR's absolute tolerances (it takes the origin to lie
+/// on the centres' line within 1.5e-8 / |centre distance|).
+pub fn apart(a: &Bound, b: &Bound, margin: f64) -> bool {
+    let dif = [
+        b.pos[0] - a.pos[0],
+        b.pos[1] - a.pos[1],
+        b.pos[2] - a.pos[2],
+    ];
+    let dist = (dif[0] * dif[0] + dif[1] * dif[1] + dif[2] * dif[2]).sqrt();
+    let size = |g: &Bound| g.extent.map_or(g.rbound, |h| h[0] + h[1] + h[2]);
+    // (coincident centres: an infinite limit; NaN: no gap compares greater)
+    let bounded = |g: &Bound| g.extent.is_some() || g.rbound > 0.0;
+    if !(bounded(a) && bounded(b)) {
+        return false;
+    }
+    let limit = margin + 1e-6 * (size(a) + size(b)) + 1e-7 / dist;
+    for (g, other) in [(a, b), (b, a)] {
+        let Some(h) = g.extent else { continue };
+        for k in 0..3 {
+            let u = [g.mat[k], g.mat[3 + k], g.mat[6 + k]];
+            let gap =
+                (u[0] * dif[0] + u[1] * dif[1] + u[2] * dif[2]).abs() - h[k] - radius(other, &u);
+            if gap > limit {
+                return true;
+            }
+        }
+    }
+    false
+}
