@@ -15,24 +15,31 @@ pub struct Bound {
     pub rbound: f64,
 }
 
-/// Half-extents of a primitive's box from its type and size.
-pub fn extent(t: i32, s: &[f64; 3]) -> Option<Vec3> {
+/// Half-extents of a geom's box from its type and size. A mesh geom's size is its mesh's
+/// largest |coordinate| per axis (what the compiler writes, its bounding radius the norm of
+/// that): taken only where the radius still says so, else the bounding sphere stands in.
+pub fn extent(t: i32, s: &[f64; 3], rbound: f64) -> Option<Vec3> {
     match t {
         SPHERE => Some([s[0]; 3]),
         CAPSULE => Some([s[0], s[0], s[1] + s[0]]),
         CYLINDER => Some([s[0], s[0], s[1]]),
         ELLIPSOID | BOX => Some(*s),
+        MESH if rbound > 0.0
+            && s.iter().all(|x| *x >= 0.0)
+            && (s[0] * s[0] + s[1] * s[1] + s[2] * s[2]).sqrt() == rbound =>
+        {
+            Some(*s)
+        }
         _ => None,
     }
 }
 
 /// Do these types (t1 <= t2) go to a routine worth a bounding-box test first: MPR (a mesh,
-/// ellipsoid or cylinder against a non-plane) or capsule-box? Cheap routines, box-box with its
-/// own separating-axis exits, and two meshes (no box: the bounding-sphere test has done it)
-/// are left alone.
+/// ellipsoid or cylinder against a non-plane) or capsule-box? Cheap routines, and box-box with
+/// its own separating-axis exits, are left alone.
 pub fn worth_testing(t1: i32, t2: i32) -> bool {
     let mpr = |t: i32| matches!(t, ELLIPSOID | CYLINDER | MESH);
-    t1 >= SPHERE && t1 != MESH && (mpr(t1) || mpr(t2) || (t1 == CAPSULE && t2 == BOX))
+    t1 >= SPHERE && (mpr(t1) || mpr(t2) || (t1 == CAPSULE && t2 == BOX))
 }
 
 /// Half-width of b's bounds along the unit axis u.

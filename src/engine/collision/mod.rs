@@ -180,7 +180,7 @@ fn boxes_apart(m: &Model, d: &Data, g1: usize, g2: usize, margin: f64) -> bool {
     let bound = |g: usize| bounds::Bound {
         pos: row(d.geom_xpos, g),
         mat: row(d.geom_xmat, g),
-        extent: bounds::extent(m.geom_type()[g], &row(m.geom_size(), g)),
+        extent: bounds::extent(m.geom_type()[g], &row(m.geom_size(), g), m.geom_rbound()[g]),
         rbound: m.geom_rbound()[g],
     };
     bounds::apart(&bound(g1), &bound(g2), margin)

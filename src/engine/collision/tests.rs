@@ -400,7 +400,9 @@ fn bounding_boxes_apart_only_without_contacts() {
         [0.0, 0.0, 0.35],
         [0.0, 0.0, -0.1],
     ];
-    let mesh_rbound = 0.35f64 * 3f64.sqrt();
+    // its largest |coordinate| per axis (the size the compiler gives its geoms) and radius
+    let mesh_aabb = [0.3, 0.25, 0.35];
+    let mesh_rbound = norm3(&mesh_aabb);
     let opt = MprOptions {
         iterations: 1000,
         tolerance: 1e-6,
@@ -427,7 +429,13 @@ fn bounding_boxes_apart_only_without_contacts() {
                 size: [0.05 + 0.3 * rnd(), 0.05 + 0.3 * rnd(), 0.05 + 0.3 * rnd()],
             }
         };
-        let (p1, p2) = (pose(0.0), pose(1.2));
+        let (mut p1, mut p2) = (pose(0.0), pose(1.2));
+        // meshes: sized as compiled (a box test) or not (the bounding sphere stands in)
+        for (t, p) in [(t1, &mut p1), (t2, &mut p2)] {
+            if t == MESH && trial % 4 < 2 {
+                p.size = mesh_aabb;
+            }
+        }
         let margin = if trial % 3 == 0 { 0.0 } else { 0.05 * rnd() };
         let shape = |t: i32| match t {
             SPHERE => Shape::Sphere,
@@ -444,13 +452,13 @@ fn bounding_boxes_apart_only_without_contacts() {
             if t == MESH {
                 mesh_rbound
             } else {
-                norm3(&bounds::extent(t, &p.size).unwrap())
+                norm3(&bounds::extent(t, &p.size, 0.0).unwrap())
             }
         };
         let bound = |t: i32, p: &GeomPose| Bound {
             pos: p.pos,
             mat: p.mat,
-            extent: bounds::extent(t, &p.size),
+            extent: bounds::extent(t, &p.size, rbound(t, p)),
             rbound: rbound(t, p),
         };
         let mut con = [ContactGeom::default(); convex::MAX_CONTACT_PAIR];
