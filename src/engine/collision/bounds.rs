@@ -18,20 +18,19 @@ pub struct Bound {
 /// Half-extents of a geom's box from its type and size. A mesh geom's size is its mesh's
 /// largest |coordinate| per axis (what the compiler writes, its bounding radius the norm of
 /// that): taken only where the radius still says so, else the bounding sphere stands in.
+/// Sizes that are negative or NaN (an edited model) give none.
 pub fn extent(t: i32, s: &[f64; 3], rbound: f64) -> Option<Vec3> {
-    match t {
-        SPHERE => Some([s[0]; 3]),
-        CAPSULE => Some([s[0], s[0], s[1] + s[0]]),
-        CYLINDER => Some([s[0], s[0], s[1]]),
-        ELLIPSOID | BOX => Some(*s),
-        MESH if rbound > 0.0
-            && s.iter().all(|x| *x >= 0.0)
-            && (s[0] * s[0] + s[1] * s[1] + s[2] * s[2]).sqrt() == rbound =>
-        {
-            Some(*s)
+    let (h, used) = match t {
+        SPHERE => ([s[0]; 3], 1),
+        CAPSULE => ([s[0], s[0], s[1] + s[0]], 2),
+        CYLINDER => ([s[0], s[0], s[1]], 2),
+        ELLIPSOID | BOX => (*s, 3),
+        MESH if rbound > 0.0 && (s[0] * s[0] + s[1] * s[1] + s[2] * s[2]).sqrt() == rbound => {
+            (*s, 3)
         }
-        _ => None,
-    }
+        _ => return None,
+    };
+    s[..used].iter().all(|x| *x >= 0.0).then_some(h)
 }
 
 /// Do these types (t1 <= t2) go to a routine worth a bounding-box test first: MPR (a mesh,

@@ -482,4 +482,14 @@ fn bounding_boxes_apart_only_without_contacts() {
         skipped > 5000 && contacts > 5000,
         "{skipped} skipped, {contacts} in contact"
     );
+
+    // edited sizes, and meshes whose size is not their vertices' bound, give no box
+    assert!(bounds::extent(BOX, &[0.1, -0.1, 0.1], 0.2).is_none());
+    assert!(bounds::extent(CAPSULE, &[f64::NAN, 0.1, 0.0], 0.2).is_none());
+    assert!(bounds::extent(MESH, &[0.0; 3], 0.0).is_none());
+    assert!(bounds::extent(MESH, &mesh_aabb, mesh_rbound * 1.01).is_none());
+    assert_eq!(
+        bounds::extent(MESH, &mesh_aabb, mesh_rbound),
+        Some(mesh_aabb)
+    );
 }
