@@ -54,18 +54,35 @@ fn vdot(d: &Vec3, v: &[[f32; 3]], i: usize) -> f64 {
     d[0] * p[0] as f64 + d[1] * p[1] as f64 + d[2] * p[2] as f64
 }
 
+/// A mesh's hull graph (mesh_graph from its mesh_graphadr): per hull vertex its first edge and
+/// its index among the mesh's vertices, and the -1-terminated neighbour lists.
+struct HullGraph<'a> {
+    edgeadr: &'a [i32],
+    globalid: &'a [i32],
+    localid: &'a [i32],
+}
+
+impl<'a> HullGraph<'a> {
+    fn new(graph: &'a [i32]) -> Self {
+        let numvert = graph[0] as usize;
+        HullGraph {
+            edgeadr: &graph[2..2 + numvert],
+            globalid: &graph[2 + numvert..2 + 2 * numvert],
+            localid: &graph[2 + 2 * numvert..],
+        }
+    }
+}
+
 /// Hill climb on a mesh's hull graph from hull vertex 0, 2.2.2's path: scan the current
 /// vertex's neighbours in order, taking each one strictly better than the best so far, then
 /// go on from the last taken. Returns the best vertex's local and global index.
 fn climb(dir: &Vec3, v: &[[f32; 3]], graph: &[i32]) -> (usize, i32) {
-    let numvert = graph[0] as usize;
-    let edgeadr = &graph[2..2 + numvert];
-    let globalid = &graph[2 + numvert..2 + 2 * numvert];
-    let localid = &graph[2 + 2 * numvert..];
-    let dot = |loc: usize| {
-        let p = &v[globalid[loc] as usize];
-        dir[0] * p[0] as f64 + dir[1] * p[1] as f64 + dir[2] * p[2] as f64
-    };
+    let HullGraph {
+        edgeadr,
+        globalid,
+        localid,
+    } = HullGraph::new(graph);
+    let dot = |loc: usize| vdot(dir, v, globalid[loc] as usize);
     let (mut ibest, mut best) = (0, dot(0));
     loop {
         let start = ibest;
@@ -463,10 +480,11 @@ pub fn plane_convex(
             }
         }
         Some(graph) if meshindex >= 0 => {
-            let numvert = graph[0] as usize;
-            let edgeadr = &graph[2..];
-            let globalid = &graph[2 + numvert..];
-            let localid = &graph[2 + 2 * numvert..];
+            let HullGraph {
+                edgeadr,
+                globalid,
+                localid,
+            } = HullGraph::new(graph);
             let mut i = edgeadr[meshindex as usize] as usize;
             while localid[i] >= 0 && count < MAXPLANEMESH {
                 let k = globalid[localid[i] as usize] as usize;
