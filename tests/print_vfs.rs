@@ -97,3 +97,25 @@ fn print_and_vfs_match_reference() {
     report("print-vfs", &msg);
     assert!(wrong.is_empty(), "{msg}");
 }
+
+/// With no handler installed, warnings print to stdout and go to MUJOCO_LOG.TXT as the
+/// reference writes them (capi-tests/warning_log.c on both libraries).
+#[test]
+fn default_warnings_print_and_log_as_reference() {
+    require_reference();
+    let src = [root().join("capi-tests/warning_log.c")];
+    let (r, o) = (
+        run(&compile_c(&src, "warning_log", Lib::Ref), &[], &[], 60),
+        run(&compile_c(&src, "warning_log", Lib::Ours), &[], &[], 60),
+    );
+    assert!(
+        r.status.success() && o.status.success(),
+        "warning_log failed"
+    );
+    let (r, o) = (text(&r.stdout), text(&o.stdout));
+    assert!(
+        r.contains("MUJOCO_LOG.TXT\nDATE\nWARNING: a plain warning\n"),
+        "unexpected reference output:\n{r}"
+    );
+    assert_eq!(o, r, "default warning output differs from the reference");
+}

@@ -7,8 +7,8 @@ use std::os::raw::{c_char, c_int, c_void};
 
 pub use crate::runtime::memory::{free, malloc, malloc_zeroed, mju_user_free, mju_user_malloc};
 pub use crate::runtime::message::{
-    c_stdout, c_stdout_flush, error, mju_user_error, mju_user_warning, warning, write_log, MsgBuf,
-    MsgHandler,
+    c_stdout, c_stdout_flush, error, mju_user_error, mju_user_warning, truncated, warning,
+    write_log, MsgBuf, MsgHandler,
 };
 
 thread_local! {
@@ -85,19 +85,19 @@ pub unsafe extern "C" fn mju_warning(msg: *const c_char) {
 }
 #[no_mangle]
 pub unsafe extern "C" fn mju_error_i(msg: *const c_char, i: c_int) {
-    error(&format1(&cstr(msg), &i.to_string()));
+    error(truncated(&format1(&cstr(msg), &i.to_string())));
 }
 #[no_mangle]
 pub unsafe extern "C" fn mju_warning_i(msg: *const c_char, i: c_int) {
-    warning(&format1(&cstr(msg), &i.to_string()));
+    warning(truncated(&format1(&cstr(msg), &i.to_string())));
 }
 #[no_mangle]
 pub unsafe extern "C" fn mju_error_s(msg: *const c_char, text: *const c_char) {
-    error(&format1(&cstr(msg), &cstr(text)));
+    error(truncated(&format1(&cstr(msg), &cstr(text))));
 }
 #[no_mangle]
 pub unsafe extern "C" fn mju_warning_s(msg: *const c_char, text: *const c_char) {
-    warning(&format1(&cstr(msg), &cstr(text)));
+    warning(truncated(&format1(&cstr(msg), &cstr(text))));
 }
 
 #[no_mangle]

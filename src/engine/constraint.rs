@@ -702,39 +702,44 @@ fn make_impedance(m: &Model, d: &mut Data) {
         let (solref, solimp) = sol_params(m, d, i);
         let (pos, dim) = pos_dim(m, d, i);
         let (imp, imp_p) = impedance(&solimp, pos, d.efc_margin[i]);
+        // stiffness and damping: the same for every row of the constraint
+        let stiffness = if solref[0] > 0.0 {
+            1.0 / max(
+                MINVAL,
+                solimp[1] * solimp[1] * solref[0] * solref[0] * solref[1] * solref[1],
+            )
+        } else {
+            -solref[0] / max(MINVAL, solimp[1] * solimp[1])
+        };
+        let damping = if solref[1] > 0.0 {
+            2.0 / max(MINVAL, solimp[1] * solref[0])
+        } else {
+            -solref[1] / max(MINVAL, solimp[1])
+        };
         for j in i..i + dim {
             d.efc_R[j] = max(MINVAL, (1.0 - imp) * d.efc_diagApprox[j] / imp);
             let tp = d.efc_type[j];
+            let frictional =
+                tp == FRICTION_DOF || tp == FRICTION_TENDON || (tp == CONTACT_ELLIPTIC && j > i);
             let k = &mut d.efc_KBIP[4 * j..4 * j + 4];
-            k[0] =
-                if tp == FRICTION_DOF || tp == FRICTION_TENDON || (tp == CONTACT_ELLIPTIC && j > i)
-                {
-                    0.0
-                } else if solref[0] > 0.0 {
-                    1.0 / max(
-                        MINVAL,
-                        solimp[1] * solimp[1] * solref[0] * solref[0] * solref[1] * solref[1],
-                    )
-                } else {
-                    -solref[0] / max(MINVAL, solimp[1] * solimp[1])
-                };
-            k[1] = if solref[1] > 0.0 {
-                2.0 / max(MINVAL, solimp[1] * solref[0])
-            } else {
-                -solref[1] / max(MINVAL, solimp[1])
-            };
+            k[0] = if frictional { 0.0 } else { stiffness };
+            k[1] = damping;
             k[2] = imp;
             k[3] = imp_p;
         }
         i += dim;
     }
     super::contact::friction_regularization(m, d);
-    for i in 0..nefc {
-        d.efc_D[i] = 1.0 / d.efc_R[i];
+    for (dd, &r) in d.efc_D[..nefc].iter_mut().zip(&d.efc_R[..nefc]) {
+        *dd = 1.0 / r;
     }
-    for i in 0..nefc {
-        let imp = d.efc_KBIP[4 * i + 2];
-        d.efc_diagApprox[i] = d.efc_R[i] * imp / (1.0 - imp);
+    let kbip = d.efc_KBIP[..4 * nefc].chunks_exact(4);
+    for ((a, &r), k) in d.efc_diagApprox[..nefc]
+        .iter_mut()
+        .zip(&d.efc_R[..nefc])
+        .zip(kbip)
+    {
+        *a = r * k[2] / (1.0 - k[2]);
     }
 }
 

@@ -102,12 +102,23 @@ pub fn factor_i(
             i = parent[i as usize];
         }
     }
-    for i in 0..nv {
-        diag_inv[i] = 1.0 / qld[madr[i] as usize];
+    // the diagonal gathered first, so that the divisions and roots run on whole vectors
+    // (each lane rounds as the scalar instruction does)
+    let diag = &mut diag_inv[..nv];
+    for (x, &a) in diag.iter_mut().zip(madr) {
+        *x = qld[a as usize];
     }
-    if let Some(s) = sqrt_inv {
-        for i in 0..nv {
-            s[i] = 1.0 / qld[madr[i] as usize].sqrt();
+    match sqrt_inv {
+        Some(s) => {
+            for (x, s) in diag.iter_mut().zip(&mut s[..nv]) {
+                *s = 1.0 / x.sqrt();
+                *x = 1.0 / *x;
+            }
+        }
+        None => {
+            for x in diag.iter_mut() {
+                *x = 1.0 / *x;
+            }
         }
     }
     Ok(())

@@ -54,8 +54,18 @@ pub fn write_log(kind: &str, msg: &str) {
         .open("MUJOCO_LOG.TXT")
     {
         let mut date = [0 as c_char; 64];
-        let _ = f.write_all(asctime_now(&mut date));
-        let _ = write!(f, "{}: {}\n\n", kind, msg);
+        let date = asctime_now(&mut date);
+        // one write per entry, as C's buffered stream makes it (a warning per solver
+        // iteration must not cost a system call per piece)
+        let mut entry = [0u8; 1200];
+        let mut w = std::io::Cursor::new(&mut entry[..]);
+        if w.write_all(date).is_ok() && write!(w, "{kind}: {msg}\n\n").is_ok() {
+            let n = w.position() as usize;
+            let _ = f.write_all(&entry[..n]);
+        } else {
+            let _ = f.write_all(date);
+            let _ = write!(f, "{kind}: {msg}\n\n");
+        }
     }
 }
 
@@ -99,14 +109,14 @@ pub fn c_stdout_flush() {
 /// A message of at most 999 bytes on the stack (2.2.2's 1000-byte buffers), NUL-terminated
 /// for C handlers: runtime warnings are reported without heap allocation.
 pub struct MsgBuf {
-    buf: [u8; 1000],
+    buf: [u8; MSG_MAX],
     len: usize,
 }
 
 impl MsgBuf {
     pub fn new() -> Self {
         MsgBuf {
-            buf: [0; 1000],
+            buf: [0; MSG_MAX],
             len: 0,
         }
     }
@@ -130,34 +140,56 @@ impl Default for MsgBuf {
 
 impl std::fmt::Write for MsgBuf {
     fn write_str(&mut self, s: &str) -> std::fmt::Result {
-        for c in s.chars().filter(|&c| c != '\0') {
-            let n = c.len_utf8();
-            if self.len + n > self.buf.len() - 1 {
+        for part in s.split('\0') {
+            let room = self.buf.len() - 1 - self.len;
+            let mut n = part.len().min(room);
+            while !part.is_char_boundary(n) {
+                n -= 1;
+            }
+            self.buf[self.len..self.len + n].copy_from_slice(&part.as_bytes()[..n]);
+            self.len += n;
+            if n < part.len() {
                 break;
             }
-            c.encode_utf8(&mut self.buf[self.len..self.len + n]);
-            self.len += n;
         }
         self.buf[self.len] = 0;
         Ok(())
     }
 }
 
-fn c_message(msg: &str) -> MsgBuf {
-    let mut b = MsgBuf::new();
-    let _ = std::fmt::Write::write_str(&mut b, msg);
-    b
+/// Calls `f` with `msg` as a NUL-terminated C string (NULs inside dropped), whole: on the
+/// stack when it fits, as the engine's messages do, else on the heap.
+fn with_c_message(msg: &str, f: impl FnOnce(*const c_char)) {
+    if msg.len() < MSG_MAX {
+        let mut b = MsgBuf::new();
+        let _ = std::fmt::Write::write_str(&mut b, msg);
+        f(b.as_c());
+    } else {
+        let text = std::ffi::CString::new(msg.replace('\0', "")).unwrap_or_default();
+        f(text.as_ptr());
+    }
+}
+
+/// Length of the buffers 2.2.2 formats messages into (snprintf): at most this minus one bytes.
+const MSG_MAX: usize = 1000;
+
+/// `msg` cut as a formatting into 2.2.2's message buffer cuts it.
+pub fn truncated(msg: &str) -> &str {
+    let mut n = msg.len().min(MSG_MAX - 1);
+    while !msg.is_char_boundary(n) {
+        n -= 1;
+    }
+    &msg[..n]
 }
 
 /// Reports a fatal error: thread-local hook, user handler, or print, log and exit.
 pub fn error(msg: &str) {
-    let text = c_message(msg);
     // SAFETY: handlers are C callbacks taking a NUL-terminated string.
     unsafe {
         if let Some(h) = tls_error_handler() {
-            h(text.as_c());
+            with_c_message(msg, |p| h(p));
         } else if let Some(h) = mju_user_error {
-            h(text.as_c());
+            with_c_message(msg, |p| h(p));
         } else {
             write_log("ERROR", msg);
             c_stdout(&format!("ERROR: {msg}\n\nPress Enter to exit ..."));
@@ -170,13 +202,12 @@ pub fn error(msg: &str) {
 
 /// Reports a warning: thread-local hook, user handler, or print and log.
 pub fn warning(msg: &str) {
-    let text = c_message(msg);
     // SAFETY: as in `error`.
     unsafe {
         if let Some(h) = tls_warning_handler() {
-            h(text.as_c());
+            with_c_message(msg, |p| h(p));
         } else if let Some(h) = mju_user_warning {
-            h(text.as_c());
+            with_c_message(msg, |p| h(p));
         } else {
             write_log("WARNING", msg);
             c_stdout("WARNING: ");
@@ -276,4 +307,31 @@ pub fn format_c(fmt: &std::ffi::CStr, args: &[f64]) -> String {
         }
     };
     String::from_utf8_lossy(&buf[..(len.max(0) as usize).min(buf.len() - 1)]).into_owned()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::MsgBuf;
+    use std::fmt::Write;
+
+    fn text(b: &MsgBuf) -> &str {
+        std::str::from_utf8(&b.buf[..b.len]).unwrap()
+    }
+
+    #[test]
+    fn message_buffer_drops_nul_and_truncates_on_char_boundary() {
+        let mut b = MsgBuf::new();
+        write!(b, "a\0b{}", 7).unwrap();
+        assert_eq!(text(&b), "ab7");
+        assert_eq!(b.buf[b.len], 0);
+        let mut b = MsgBuf::new();
+        b.write_str(&"x".repeat(998)).unwrap();
+        b.write_str("é and more").unwrap(); // two bytes where one is left
+        assert_eq!(b.len, 998);
+        b.write_str("y").unwrap();
+        assert_eq!(text(&b), format!("{}y", "x".repeat(998)));
+        b.write_str("z").unwrap();
+        assert_eq!(b.len, 999);
+        assert_eq!(b.buf[999], 0);
+    }
 }
