@@ -1,9 +1,10 @@
 // Step time of two libraries in one process (capi-tests/bench --ab; tests/speed.rs):
 //   ab LIB_A LIB_B MODEL BLOCK ROUNDS [DISABLEFLAGS [OFFSET_B]]
 // dlopens both libraries (each with its own symbols), loads MODEL in each, ors DISABLEFLAGS into
-// opt.disableflags (at 2.2.2's offset, or OFFSET_B for library B), takes 100 steps, then times
-// ROUNDS rounds of BLOCK mj_step calls per library, alternating which goes first. A slow spell
-// of the machine hits both alike, so the ratio holds where whole-process timings swing.
+// opt.disableflags (at 2.2.2's offset, or OFFSET_B for library B), silences warnings, takes 100
+// steps, then times ROUNDS rounds of BLOCK mj_step calls per library, alternating which goes
+// first. A slow spell of the machine hits both alike, so the ratio holds where whole-process
+// timings swing.
 // Built without linking any MuJoCo (gcc -I include ab.c -ldl), so that neither library's
 // symbols are in the global scope. Prints "ab <ns A min> <ns A median> <ns B min> <ns B median>" per step, or "error <message>".
 #define _GNU_SOURCE
@@ -36,6 +37,8 @@ static int by_value(const void* a, const void* b) {
   return (x > y) - (x < y);
 }
 
+static void quiet(const char* msg) { (void)msg; }
+
 static int open_lib(struct lib* l, const char* path, const char* model, int flags, size_t off) {
   void* h = dlopen(path, RTLD_NOW | RTLD_LOCAL);
   if (!h) {
@@ -49,6 +52,10 @@ static int open_lib(struct lib* l, const char* path, const char* model, int flag
     printf("error %s: no mj_loadXML, mj_makeData or mj_step\n", path);
     return 0;
   }
+  // warnings silenced in both, as in bench.c: unstable runs reset and go on, and the output
+  // stays one line
+  void (**warn)(const char*) = (void (**)(const char*))dlsym(h, "mju_user_warning");
+  if (warn) *warn = quiet;
   char err[1000] = "";
   l->m = load(model, NULL, err, sizeof err);
   if (!l->m) {
