@@ -49,7 +49,8 @@ pub unsafe fn cstr<'a>(s: *const c_char) -> std::borrow::Cow<'a, str> {
     }
 }
 
-/// Formats a printf-style message with one `%d`/`%i` or `%s` argument.
+/// Formats a printf-style message with one `%d`/`%i` or `%s` argument, cut as 2.2.2's
+/// 1000-byte buffer cuts it.
 fn format1(fmt: &str, arg: &str) -> String {
     let mut out = String::new();
     let mut it = fmt.chars().peekable();
@@ -72,6 +73,7 @@ fn format1(fmt: &str, arg: &str) -> String {
             out.push(c);
         }
     }
+    out.truncate(truncated(&out).len());
     out
 }
 
@@ -85,19 +87,19 @@ pub unsafe extern "C" fn mju_warning(msg: *const c_char) {
 }
 #[no_mangle]
 pub unsafe extern "C" fn mju_error_i(msg: *const c_char, i: c_int) {
-    error(truncated(&format1(&cstr(msg), &i.to_string())));
+    error(&format1(&cstr(msg), &i.to_string()));
 }
 #[no_mangle]
 pub unsafe extern "C" fn mju_warning_i(msg: *const c_char, i: c_int) {
-    warning(truncated(&format1(&cstr(msg), &i.to_string())));
+    warning(&format1(&cstr(msg), &i.to_string()));
 }
 #[no_mangle]
 pub unsafe extern "C" fn mju_error_s(msg: *const c_char, text: *const c_char) {
-    error(truncated(&format1(&cstr(msg), &cstr(text))));
+    error(&format1(&cstr(msg), &cstr(text)));
 }
 #[no_mangle]
 pub unsafe extern "C" fn mju_warning_s(msg: *const c_char, text: *const c_char) {
-    warning(truncated(&format1(&cstr(msg), &cstr(text))));
+    warning(&format1(&cstr(msg), &cstr(text)));
 }
 
 #[no_mangle]

@@ -141,12 +141,9 @@ impl Default for MsgBuf {
 impl std::fmt::Write for MsgBuf {
     fn write_str(&mut self, s: &str) -> std::fmt::Result {
         for part in s.split('\0') {
-            let room = self.buf.len() - 1 - self.len;
-            let mut n = part.len().min(room);
-            while !part.is_char_boundary(n) {
-                n -= 1;
-            }
-            self.buf[self.len..self.len + n].copy_from_slice(&part.as_bytes()[..n]);
+            let kept = cut(part, self.buf.len() - 1 - self.len);
+            let n = kept.len();
+            self.buf[self.len..self.len + n].copy_from_slice(kept.as_bytes());
             self.len += n;
             if n < part.len() {
                 break;
@@ -175,11 +172,16 @@ const MSG_MAX: usize = 1000;
 
 /// `msg` cut as a formatting into 2.2.2's message buffer cuts it.
 pub fn truncated(msg: &str) -> &str {
-    let mut n = msg.len().min(MSG_MAX - 1);
-    while !msg.is_char_boundary(n) {
+    cut(msg, MSG_MAX - 1)
+}
+
+/// The longest start of `s` of at most `max` bytes that ends on a character boundary.
+fn cut(s: &str, max: usize) -> &str {
+    let mut n = s.len().min(max);
+    while !s.is_char_boundary(n) {
         n -= 1;
     }
-    &msg[..n]
+    &s[..n]
 }
 
 /// Reports a fatal error: thread-local hook, user handler, or print, log and exit.
