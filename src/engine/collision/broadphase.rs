@@ -12,6 +12,7 @@ use crate::math::eig3::eig3;
 use crate::math::vec3::{dot3, sub3};
 use crate::math::Mat3;
 
+use super::spheres::{beyond, body_sphere};
 use super::{can_pair, dynamic_pair_apart, welds_filtered};
 
 /// Does the body have a geom with contype or conaffinity?
@@ -173,17 +174,18 @@ fn frameless_taken() {
 fn frameless_taken() {}
 
 /// Most swept bodies, and geom pairs tested, with which `pairs_without_frame` is tried.
-const MAX_FRAMELESS_BODIES: usize = 8;
-const MAX_FRAMELESS_TESTS: usize = 32;
+const MAX_FRAMELESS_BODIES: usize = 22;
+const MAX_FRAMELESS_TESTS: usize = 200;
 
 /// The swept pairs that matter, found without the principal frame (2.2.2 computes it in every
-/// step: an iterative eigen-decomposition): a pair of swept bodies whose geoms' bounding
-/// spheres (with margins, as in the boxes) overlap by more than any rounding is in the sweep's
-/// list in every frame; a pair whose geoms' masks or weld bodies the collision loop filters
-/// out, or whose every geom pair fails mj_collideGeoms's bounding-sphere test, gives no contact
-/// whether listed or not. (An excluded pair is tested as any other: the loop's merge with the
-/// exclude list, which it reads as sorted, decides for it.) When every pair is one or the
-/// other, the first kind are the pairs, and the contacts are the sweep's. False (nothing added)
+/// step: an iterative eigen-decomposition): a pair of swept bodies whose geoms' masks or weld
+/// bodies the collision loop filters out, or whose every geom pair the masks let through fails
+/// mj_collideGeoms's bounding-sphere test (all at once where the spheres around the two bodies
+/// are apart), gives no contact whether listed or not: it is left out; any other pair whose
+/// geoms' bounding spheres (with margins, as in the boxes) overlap by more than any rounding
+/// is in the sweep's list in every frame: it is listed. (An excluded pair is tested as any
+/// other: the loop's merge with the exclude list, which it reads as sorted, decides for it.)
+/// When every pair is one or the other, the contacts are the sweep's. False (nothing added)
 /// when some pair is in between, a user contact filter is to see every listed pair, a swept
 /// body also pairs with all bodies (its pairs would be listed twice), or some position is not
 /// finite or too large for the sweep's f32 keys. `bodies` and `masks`: scratch of at least one
@@ -225,6 +227,10 @@ fn pairs_without_frame(
         n += 1;
     }
     let unpack = |k: u64| ((k >> 32) as u32 as i32, k as u32 as i32);
+    let mut sphere = [None; MAX_FRAMELESS_BODIES];
+    for (s, &b) in sphere.iter_mut().zip(&bodies[..n]) {
+        *s = body_sphere(m, d, b as usize);
+    }
     let start = pairs.n;
     let mut tests = 0;
     for i in 0..n {
@@ -235,6 +241,12 @@ fn pairs_without_frame(
                 || welds_filtered(m, m.body_weldid()[b1], m.body_weldid()[b2])
             {
                 continue;
+            }
+            // every geom pair apart: no contact
+            if let (Some(s1), Some(s2)) = (sphere[i], sphere[j]) {
+                if beyond(m, &s1.0, s1.1, s1.2, s2) {
+                    continue;
+                }
             }
             match frameless_pair(m, d, body_geoms(m, b1), body_geoms(m, b2), &mut tests) {
                 Some(true) => pairs.add(m, true, b1, b2)?,
@@ -249,8 +261,10 @@ fn pairs_without_frame(
     Ok(true)
 }
 
-/// One pair of swept bodies for `pairs_without_frame`: Some(true) when listed in every frame,
-/// Some(false) when it can give no contact, None when neither is certain (or the tests run out).
+/// One pair of swept bodies for `pairs_without_frame`: Some(false) when it can give no contact
+/// (every geom pair the masks let through is apart by the sphere test, or has no collider),
+/// else Some(true) when listed in every frame, None when neither is certain (or the tests run
+/// out).
 fn frameless_pair(
     m: &Model,
     d: &Data,
@@ -260,7 +274,25 @@ fn frameless_pair(
 ) -> Option<bool> {
     let (rbound, margin) = (m.geom_rbound(), m.geom_margin());
     let (contype, conaffinity) = (m.geom_contype(), m.geom_conaffinity());
+    let mask = |g: usize| (contype[g], conaffinity[g]);
     let mut apart = true;
+    'pairs: for g1 in geoms1.clone() {
+        for g2 in geoms2.clone() {
+            if can_pair(mask(g1), mask(g2)) {
+                *tests += 1;
+                if *tests > MAX_FRAMELESS_TESTS {
+                    return None;
+                }
+                if !dynamic_pair_apart(m, d, g1, g2) {
+                    apart = false;
+                    break 'pairs;
+                }
+            }
+        }
+    }
+    if apart {
+        return Some(false);
+    }
     for g1 in geoms1 {
         let p1 = row::<3>(d.geom_xpos, g1);
         let r1 = rbound[g1] + margin[g1];
@@ -280,16 +312,9 @@ fn frameless_pair(
             if overlap > 0.0 && dist2 < overlap * overlap {
                 return Some(true);
             }
-            let masks = (
-                (contype[g1], conaffinity[g1]),
-                (contype[g2], conaffinity[g2]),
-            );
-            if apart && can_pair(masks.0, masks.1) {
-                apart = dynamic_pair_apart(m, d, g1, g2);
-            }
         }
     }
-    apart.then_some(false)
+    None
 }
 
 /// Candidate body pairs into `pair` (from the arena), sorted by signature; returns their count.

@@ -8,10 +8,12 @@ use crate::engine::linalg::row;
 pub mod bounds;
 pub mod boxes;
 pub mod broadphase;
+mod candidates;
 pub mod convex;
 pub mod mpr;
 pub mod narrow;
 pub mod primitive;
+mod spheres;
 #[cfg(test)]
 mod tests;
 use crate::abi::*;
@@ -25,7 +27,7 @@ use primitive::ContactGeom;
 /// Smallest friction coefficient of a contact (mjMINMU).
 const MINMU: f64 = 1e-5;
 
-fn assign_margin(m: &Model, margin: f64) -> f64 {
+pub(super) fn assign_margin(m: &Model, margin: f64) -> f64 {
     if enabled(m, mjtEnableBit_::mjENBL_OVERRIDE) {
         m.raw.opt.o_margin
     } else {
@@ -157,7 +159,7 @@ fn dedup_box_box(con: &mut [ContactGeom], n: usize) -> usize {
 
 /// Where a geom pair comes from.
 #[derive(Clone, Copy)]
-enum Source {
+pub(super) enum Source {
     /// An explicit pair: its index.
     Pair(usize),
     /// The broad phase: `filtered` is the built-in filter's verdict, which stands unless a
@@ -204,7 +206,7 @@ pub(super) fn dynamic_pair_apart(m: &Model, d: &Data, g1: usize, g2: usize) -> b
 /// Tests one geom pair (mj_collideGeoms).
 /// Returns Ok(false) when the contact buffer is full (2.2.2 stops adding then).
 /// `top`: the stack in use (a user contact filter allocates above it).
-fn collide_geoms(
+pub(super) fn collide_geoms(
     m: &Model,
     d: &mut Data,
     top: usize,
@@ -307,7 +309,7 @@ fn collide_geoms(
 }
 
 /// Contacts a narrow-phase collider reports for one geom pair.
-type Contacts = [ContactGeom; narrow::MAX_CONTACT_PAIR];
+pub(super) type Contacts = [ContactGeom; narrow::MAX_CONTACT_PAIR];
 
 /// Appends a contact (mj_addContact); false with the buffer-full warning when there is no room.
 fn add_contact(m: &Model, d: &mut Data, con: mjContact) -> Result<bool, EngineError> {
@@ -345,6 +347,7 @@ pub fn collision(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     let merge = npair > 0 && m.raw.opt.collision == mjtCollision_::mjCOL_ALL as i32;
     d.with_scratch(|d, a| -> Result<(), EngineError> {
         let pairs = broadphase::broadphase(m, d, a)?;
+        let mut spheres = None;
         let nexclude = m.raw.nexclude.max(0) as usize;
         let (mut pairadr, mut exadr) = (0usize, 0usize);
         for &bp in pairs.iter() {
@@ -387,6 +390,27 @@ pub fn collision(m: &Model, d: &mut Data) -> Result<(), EngineError> {
             let masks2 = geoms2
                 .clone()
                 .fold((0, 0), |(t, a), g| (t | contype[g], a | conaffinity[g]));
+            let many =
+                geoms1.len() * geoms2.len() >= candidates::MIN_PAIRS && candidates::enabled();
+            if many && !merged && !hooks::contact_filter_set() {
+                let bodies = (b1, b2);
+                // (the sweep's scratch was larger: the stack's high-water mark stays)
+                let spheres = match spheres {
+                    Some(ref mut s) => s,
+                    None => spheres.insert(spheres::Spheres::new(a.alloc_stale(5 * nbody)?)),
+                };
+                candidates::collide_bodies(
+                    m,
+                    d,
+                    a.used(),
+                    bodies,
+                    geoms1,
+                    geoms2,
+                    spheres,
+                    &mut con,
+                )?;
+                continue;
+            }
             for g1 in geoms1 {
                 // a geom that pairs with none of the other body's geoms
                 if n2 > 1 && !can_pair(mask(g1), masks2) && !hooks::contact_filter_set() {

@@ -303,12 +303,83 @@ thread_local! {
     pub static SWEEP_ONLY: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
     /// Times the broad phase found its pairs without the frame.
     pub static FRAMELESS: std::cell::Cell<usize> = const { std::cell::Cell::new(0) };
+    /// Set: the collision loop tests every geom pair one at a time.
+    pub static ONE_BY_ONE: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+    /// Body pairs and geoms the enclosing-sphere tests skipped.
+    pub static SPHERE_SKIPS: std::cell::Cell<usize> = const { std::cell::Cell::new(0) };
+}
+
+/// Uniform numbers in [0, 1) from a 64-bit linear congruential generator.
+fn uniform(mut seed: u64) -> impl FnMut() -> f64 {
+    move || {
+        seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (seed >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
+/// The contacts (as text) of kinematics and collision at qpos `q`, with `switch` off, then on.
+fn both_ways(
+    data: &mut crate::api::Data,
+    q: &[f64],
+    switch: &'static std::thread::LocalKey<std::cell::Cell<bool>>,
+) -> [Vec<String>; 2] {
+    [false, true].map(|on| {
+        // (kinematics normalizes the quaternions in qpos)
+        data.qpos_mut().copy_from_slice(q);
+        switch.with(|f| f.set(on));
+        let found = data
+            .with_core(|m, d| {
+                crate::engine::kinematics::kinematics(m, d)?;
+                super::collision(m, d)?;
+                let con = &d.contact[..d.raw.ncon as usize];
+                Ok(con.iter().map(|c| format!("{c:?}")).collect::<Vec<_>>())
+            })
+            .unwrap();
+        switch.with(|f| f.set(false));
+        found
+    })
+}
+
+/// The collision loop's candidate pairs (found a body and a geom at a time by enclosing
+/// spheres, then without branches) give the contacts of the pairs tested one at a time, bit
+/// for bit: random poses of four free bodies of several geoms each, from interpenetrating to
+/// apart, over world geoms; with the geoms' margins and with the contact override.
+#[test]
+fn candidate_pairs_give_the_contacts_of_each_pair() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("models/extra");
+    let mut uniform = uniform(777);
+    for file in ["geom_clusters.xml", "geom_clusters_override.xml"] {
+        let xml = std::fs::read_to_string(dir.join(file)).unwrap();
+        let model = crate::api::Model::from_xml_str(&xml).unwrap();
+        let mut data = model.make_data().unwrap();
+        let (nq, qpos0) = (model.raw().nq as usize, data.qpos().to_vec());
+        SPHERE_SKIPS.with(|n| n.set(0));
+        let mut touching = 0;
+        for k in 0..600 {
+            // the bodies spread over a box that shrinks and grows again
+            let spread = 0.1 + 0.6 * ((k % 60) as f64 / 60.0);
+            let q: Vec<f64> = (0..nq)
+                .map(|i| qpos0[i] + spread * (uniform() - 0.5))
+                .collect();
+            let contacts = both_ways(&mut data, &q, &ONE_BY_ONE);
+            assert_eq!(contacts[0], contacts[1]);
+            touching += contacts[0].len();
+        }
+        let skips = SPHERE_SKIPS.with(|n| n.get());
+        assert!(
+            skips > 1000 && touching > 1000,
+            "{skips} skips, {touching} contacts"
+        );
+    }
 }
 
 /// The broad phase's pairs found without the principal frame give the contacts of 2.2.2's
 /// sweep, bit for bit: random poses of free bodies and joints on our two test models (self
-/// collisions, masks, an exclude, an explicit pair, margins, the contact override) and on the
-/// first with self collisions masked out, partly and wholly.
+/// collisions, masks, an exclude, an explicit pair, margins, the contact override), on the
+/// first with self collisions masked out, partly and wholly, and on free bodies of several
+/// geoms each, visual ones among them (body spheres, pairs left out before listed).
 #[test]
 fn frameless_broadphase_gives_the_sweeps_contacts() {
     let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("models/extra");
@@ -328,14 +399,9 @@ fn frameless_broadphase_gives_the_sweeps_contacts() {
         )
         .replace("type=\"plane\"", "type=\"plane\" conaffinity=\"3\"");
     assert!(masked != pairs && apart != masked);
-    let mut seed = 12345u64;
-    let mut uniform = move || {
-        seed = seed
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (seed >> 11) as f64 / (1u64 << 53) as f64
-    };
-    for xml in [&pairs, &over, &masked, &apart] {
+    let mut uniform = uniform(12345);
+    let clusters = std::fs::read_to_string(dir.join("geom_clusters.xml")).unwrap();
+    for xml in [&pairs, &over, &masked, &apart, &clusters] {
         let model = crate::api::Model::from_xml_str(xml).unwrap();
         let mut data = model.make_data().unwrap();
         let arrays = model.arrays();
@@ -351,22 +417,7 @@ fn frameless_broadphase_gives_the_sweeps_contacts() {
             let q: Vec<f64> = (0..nq)
                 .map(|i| qpos0[i] + 0.6 * (uniform() - 0.5))
                 .collect();
-            let mut contacts = Vec::new();
-            for sweep in [false, true] {
-                // (kinematics normalizes the quaternions in qpos)
-                data.qpos_mut().copy_from_slice(&q);
-                SWEEP_ONLY.with(|f| f.set(sweep));
-                let found = data
-                    .with_core(|m, d| {
-                        crate::engine::kinematics::kinematics(m, d)?;
-                        super::collision(m, d)?;
-                        let con = &d.contact[..d.raw.ncon as usize];
-                        Ok(con.iter().map(|c| format!("{c:?}")).collect::<Vec<_>>())
-                    })
-                    .unwrap();
-                contacts.push(found);
-            }
-            SWEEP_ONLY.with(|f| f.set(false));
+            let contacts = both_ways(&mut data, &q, &SWEEP_ONLY);
             assert_eq!(contacts[0], contacts[1]);
             touching += contacts[0].len();
         }

@@ -1,0 +1,110 @@
+//! The geom pairs of a body pair that may touch, found without branching on each pair: most
+//! fail the masks or the bounding-sphere test, in no pattern a branch predictor learns. Used
+//! when no user contact filter is to see every pair (one that a warning handler sets while a
+//! body pair is being tested sees pairs from the next one); collide_geoms still makes the exact
+//! tests.
+
+use super::spheres::{beyond, Spheres};
+use super::{assign_margin, can_pair, collide_geoms, narrow, Contacts, Source};
+use crate::engine::linalg::row;
+use crate::engine::{Data, EngineError, Model};
+use crate::math::vec3::sub3;
+
+/// A squared distance beyond `FAR` times a squared reach above 1e-100 (its square a normal
+/// number) has a rounded square root beyond the reach.
+const FAR: f64 = 1.0 + 1e-10;
+
+/// Fewest geom pairs of a body pair worth this way (with fewer, the tests one by one are faster).
+pub(super) const MIN_PAIRS: usize = 16;
+
+/// Off: every body pair goes one geom pair at a time (the tests compare the two ways).
+#[cfg(test)]
+pub(super) fn enabled() -> bool {
+    !super::tests::ONE_BY_ONE.with(|f| f.get())
+}
+#[cfg(not(test))]
+#[inline(always)]
+pub(super) fn enabled() -> bool {
+    true
+}
+
+#[cfg(test)]
+fn skipped() {
+    super::tests::SPHERE_SKIPS.with(|n| n.set(n.get() + 1));
+}
+#[cfg(not(test))]
+#[inline(always)]
+fn skipped() {}
+
+/// The geom pairs of bodies b1 and b2 (built-in filter passed at the body level, no explicit
+/// pair of theirs, no user contact filter) through collide_geoms, in order.
+#[allow(clippy::too_many_arguments)]
+pub(super) fn collide_bodies(
+    m: &Model,
+    d: &mut Data,
+    top: usize,
+    (b1, b2): (usize, usize),
+    geoms1: std::ops::Range<usize>,
+    geoms2: std::ops::Range<usize>,
+    spheres: &mut Spheres,
+    con: &mut Contacts,
+) -> Result<(), EngineError> {
+    let s2 = spheres.get(m, d, b2);
+    if let (Some(s1), Some(s2)) = (spheres.get(m, d, b1), s2) {
+        if beyond(m, &s1.0, s1.1, s1.2, s2) {
+            skipped();
+            return Ok(());
+        }
+    }
+    let (contype, conaffinity) = (m.geom_contype(), m.geom_conaffinity());
+    let masks2 = geoms2
+        .clone()
+        .fold((0, 0), |(t, a), g| (t | contype[g], a | conaffinity[g]));
+    for g1 in geoms1 {
+        // a geom that pairs with none of the other body's geoms, or is far from all
+        if !can_pair((contype[g1], conaffinity[g1]), masks2) {
+            continue;
+        }
+        let r1 = m.geom_rbound()[g1];
+        if let Some(s2) = s2 {
+            if r1 > 0.0 && beyond(m, &row(d.geom_xpos, g1), r1, m.geom_margin()[g1], s2) {
+                skipped();
+                continue;
+            }
+        }
+        for base in geoms2.clone().step_by(64) {
+            let mut bits = candidates(m, d, g1, base..geoms2.end.min(base + 64));
+            while bits != 0 {
+                let g2 = base + bits.trailing_zeros() as usize;
+                bits &= bits - 1;
+                let source = Source::Dynamic { filtered: false };
+                collide_geoms(m, d, top, g1, g2, source, con)?;
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The geoms g2 of `geoms2` (at most 64) that may touch g1, as bits from its start: the masks
+/// match, a collider exists and the bounding spheres are not clearly apart (collide_geoms
+/// returns at once for the others, and makes the exact test).
+#[inline]
+fn candidates(m: &Model, d: &Data, g1: usize, geoms2: std::ops::Range<usize>) -> u64 {
+    let (contype, conaffinity) = (m.geom_contype(), m.geom_conaffinity());
+    let (types, rbound, margins) = (m.geom_type(), m.geom_rbound(), m.geom_margin());
+    let (mask1, t1, r1) = ((contype[g1], conaffinity[g1]), types[g1], rbound[g1]);
+    let (p1, margin1) = (row::<3>(d.geom_xpos, g1), margins[g1]);
+    let mut bits = 0;
+    for g2 in geoms2.clone() {
+        let paired = can_pair(mask1, (contype[g2], conaffinity[g2]));
+        let collider = narrow::has_collider(t1, types[g2]);
+        // spheres_apart (symmetric in the two geoms) without its square root
+        let r2 = rbound[g2];
+        let reach = r1 + r2 + assign_margin(m, margin1.max(margins[g2]));
+        let dif = sub3(&p1, &row(d.geom_xpos, g2));
+        let dist2 = dif[0] * dif[0] + dif[1] * dif[1] + dif[2] * dif[2];
+        let apart = (r1 > 0.0) & (r2 > 0.0) & (reach > 1e-100) & (dist2 > reach * reach * FAR);
+        bits |= u64::from(paired & collider & !apart) << (g2 - geoms2.start);
+    }
+    bits
+}
