@@ -93,6 +93,24 @@ pub fn dot(a: &[f64], b: &[f64], n: usize) -> f64 {
     add_remainder(s, &a[n4..n], &b[n4..n])
 }
 
+/// `dot` of four vectors with one (`b`): each sum in `dot`'s order, b read once for all four.
+pub fn dot4(a: [&[f64]; 4], b: &[f64], n: usize) -> [f64; 4] {
+    let n4 = n & !3;
+    let mut p = [[0.0f64; 4]; 4];
+    for (c, y) in b[..n4].chunks_exact(4).enumerate() {
+        for (pr, ar) in p.iter_mut().zip(&a) {
+            let x = &ar[4 * c..4 * c + 4];
+            for k in 0..4 {
+                pr[k] += x[k] * y[k];
+            }
+        }
+    }
+    std::array::from_fn(|r| {
+        let s = (p[r][0] + p[r][2]) + (p[r][1] + p[r][3]);
+        add_remainder(s, &a[r][n4..n], &b[n4..n])
+    })
+}
+
 /// The four partial sums of blocks of four, combined (p0 + p2) + (p1 + p3); length a multiple
 /// of 4. Never -0: each partial sum starts at +0 and a sum is -0 only of two -0.
 #[inline(always)]

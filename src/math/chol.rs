@@ -1,6 +1,6 @@
 //! Dense Cholesky factorization, solve and rank-one update (lower triangle, in place).
 
-use super::blas::dot;
+use super::blas::{dot, dot4};
 use super::MINVAL;
 
 /// Factorizes the n x n matrix in place as L*L' (L in the lower triangle; the strict upper
@@ -19,11 +19,28 @@ pub fn chol_factor(mat: &mut [f64], n: usize, mindiag: f64) -> usize {
         }
         mat[j * (n + 1)] = d.sqrt();
         let inv = 1.0 / mat[j * (n + 1)];
-        for i in j + 1..n {
-            let (head, tail) = mat.split_at_mut(i * n);
-            let rowj = &head[j * n..j * n + j];
-            let s = dot(&tail[..j], rowj, j);
-            tail[j] = (tail[j] - s) * inv;
+        // the rows below: four at a time share the loads of row j (each sum in dot's order)
+        let (head, below) = mat.split_at_mut((j + 1) * n);
+        let rowj = &head[j * n..j * n + j];
+        let mut quads = below.chunks_exact_mut(4 * n);
+        for q in &mut quads {
+            let s = dot4(
+                [
+                    &q[..j],
+                    &q[n..n + j],
+                    &q[2 * n..2 * n + j],
+                    &q[3 * n..3 * n + j],
+                ],
+                rowj,
+                j,
+            );
+            for (r, s) in s.iter().enumerate() {
+                q[r * n + j] = (q[r * n + j] - s) * inv;
+            }
+        }
+        for row in quads.into_remainder().chunks_exact_mut(n) {
+            let s = dot(&row[..j], rowj, j);
+            row[j] = (row[j] - s) * inv;
         }
     }
     rank

@@ -23,7 +23,7 @@ pub mod vec3;
 pub mod wrap;
 
 #[cfg(test)]
-mod tests;
+pub(crate) mod tests;
 
 pub use eig3::{eig3, Eig3};
 pub use quat::*;

@@ -784,3 +784,57 @@ fn sparse_cholesky_counts_match_the_factorization() {
         }
     }
 }
+
+/// Uniform numbers in [0, 1) from a 64-bit linear congruential generator.
+pub(crate) fn uniform(mut seed: u64) -> impl FnMut() -> f64 {
+    move || {
+        seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (seed >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
+/// dot4 gives dot's four sums bit for bit, and chol_factor (rows four at a time) the factor of
+/// rows one at a time, on random vectors and matrices of every remainder length.
+#[test]
+fn dot4_and_chol_factor_as_one_row_at_a_time() {
+    use super::blas::{dot, dot4};
+    use super::chol::chol_factor;
+    let mut unit = uniform(99);
+    let mut uniform = move || unit() - 0.5;
+    for n in 0..24 {
+        let a: Vec<Vec<f64>> = (0..4)
+            .map(|_| (0..n).map(|_| uniform()).collect())
+            .collect();
+        let b: Vec<f64> = (0..n).map(|_| uniform()).collect();
+        let four = dot4([&a[0], &a[1], &a[2], &a[3]], &b, n);
+        for r in 0..4 {
+            assert_eq!(four[r].to_bits(), dot(&a[r], &b, n).to_bits());
+        }
+    }
+    for n in 1..14 {
+        // A*A' + n*I, and a copy factored one row at a time as before
+        let a: Vec<f64> = (0..n * n).map(|_| uniform()).collect();
+        let mut mat = vec![0.0; n * n];
+        for i in 0..n {
+            for j in 0..n {
+                mat[i * n + j] = dot(&a[i * n..], &a[j * n..], n) + if i == j { 0.1 } else { 0.0 };
+            }
+        }
+        let mut one = mat.clone();
+        for j in 0..n {
+            let d = one[j * (n + 1)] - dot(&one[j * n..], &one[j * n..], j);
+            one[j * (n + 1)] = d.max(1e-15).sqrt();
+            let inv = 1.0 / one[j * (n + 1)];
+            for i in j + 1..n {
+                let s = dot(&one[i * n..], &one[j * n..], j);
+                one[i * n + j] = (one[i * n + j] - s) * inv;
+            }
+        }
+        assert_eq!(chol_factor(&mut mat, n, 1e-15), n);
+        for (x, y) in mat.iter().zip(&one) {
+            assert_eq!(x.to_bits(), y.to_bits());
+        }
+    }
+}

@@ -1,5 +1,6 @@
 //! Unit tests of the narrow phase: geometric properties of the contacts each pair produces.
 
+use crate::math::tests::uniform;
 use crate::math::*;
 
 fn close(a: &[f64], b: &[f64], tol: f64) -> bool {
@@ -307,16 +308,6 @@ thread_local! {
     pub static ONE_BY_ONE: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
     /// Body pairs and geoms the enclosing-sphere tests skipped.
     pub static SPHERE_SKIPS: std::cell::Cell<usize> = const { std::cell::Cell::new(0) };
-}
-
-/// Uniform numbers in [0, 1) from a 64-bit linear congruential generator.
-fn uniform(mut seed: u64) -> impl FnMut() -> f64 {
-    move || {
-        seed = seed
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (seed >> 11) as f64 / (1u64 << 53) as f64
-    }
 }
 
 /// The contacts (as text) of kinematics and collision at qpos `q`, with `switch` off, then on.
