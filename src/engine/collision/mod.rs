@@ -387,9 +387,6 @@ pub fn collision(m: &Model, d: &mut Data) -> Result<(), EngineError> {
             let (geoms1, geoms2) = (a1..a1 + n1 as usize, a2..a2 + n2 as usize);
             let (contype, conaffinity) = (m.geom_contype(), m.geom_conaffinity());
             let mask = |g: usize| (contype[g], conaffinity[g]);
-            let masks2 = geoms2
-                .clone()
-                .fold((0, 0), |(t, a), g| (t | contype[g], a | conaffinity[g]));
             let many =
                 geoms1.len() * geoms2.len() >= candidates::MIN_PAIRS && candidates::enabled();
             if many && !merged && !hooks::contact_filter_set() {
@@ -411,6 +408,9 @@ pub fn collision(m: &Model, d: &mut Data) -> Result<(), EngineError> {
                 )?;
                 continue;
             }
+            let masks2 = geoms2
+                .clone()
+                .fold((0, 0), |(t, a), g| (t | contype[g], a | conaffinity[g]));
             for g1 in geoms1 {
                 // a geom that pairs with none of the other body's geoms
                 if n2 > 1 && !can_pair(mask(g1), masks2) && !hooks::contact_filter_set() {
