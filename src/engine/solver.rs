@@ -436,8 +436,8 @@ fn update_constraint(m: &Model, d: &mut Data, c: &mut Ctx) -> Result<(), EngineE
     Ok(())
 }
 
-/// grad and the preconditioned gradient (Hessian or mass-matrix solve).
-fn update_gradient(m: &Model, d: &mut Data, c: &mut Ctx) {
+/// The cost's gradient, grad = Ma - qfrc_smooth - qfrc_constraint.
+fn update_gradient(m: &Model, d: &Data, c: &mut Ctx) {
     let nv = m.raw.nv as usize;
     for (((g, ma), fs), fc) in c.grad[..nv]
         .iter_mut()
@@ -447,6 +447,11 @@ fn update_gradient(m: &Model, d: &mut Data, c: &mut Ctx) {
     {
         *g = ma - fs - fc;
     }
+}
+
+/// The preconditioned gradient Mgrad: grad through the Hessian (Newton) or the mass matrix.
+fn precondition(m: &Model, d: &Data, c: &mut Ctx) {
+    let nv = m.raw.nv as usize;
     let h = if c.ncone > 0 { &*c.hcone } else { &*c.h };
     if c.newton && c.sparse {
         let (nnz, adr, ind) = (&*c.rownnz, &*c.rowadr, &*c.colind);
@@ -1071,6 +1076,7 @@ fn cg_newton(
         hessian_direct(m, d, a, &mut c)?;
     }
     update_gradient(m, d, &mut c);
+    precondition(m, d, &mut c);
     scl(&mut c.search[..nv], &c.mgrad[..nv], -1.0);
 
     let mut iter = 0;
@@ -1108,9 +1114,11 @@ fn cg_newton(
             neval,
             nupdate,
         );
-        if improvement < m.raw.opt.tolerance || gradient < m.raw.opt.tolerance {
+        // Mgrad only sets the next search direction: the last iteration skips its solve
+        if improvement < m.raw.opt.tolerance || gradient < m.raw.opt.tolerance || iter >= maxiter {
             break;
         }
+        precondition(m, d, &mut c);
         if newton {
             scl(&mut c.search[..nv], &c.mgrad[..nv], -1.0);
         } else {
