@@ -442,13 +442,15 @@ pub fn capsule_box(g1: &GeomPose, g2: &GeomPose, margin: f64, con: &mut [Contact
     }
 
     let bestdistmax = margin + 2.0 * (size1[0] + halflength + size2[0] + size2[1] + size2[2]);
-    let mut bestdist = bestdistmax;
-    let mut bestsegmentpos = 0.0;
-    let mut bestboxpos = 0.0;
-    let mut cltype: i32 = -4;
+    let mut best = Closest {
+        dist: bestdistmax,
+        segpos: 0.0,
+        boxpos: 0.0,
+        cltype: -4,
+        corner: 0,
+        edge: 0,
+    };
     let mut clface: i32 = -1;
-    let mut clcorner: usize = 0;
-    let mut cledge: usize = 0;
 
     // an end of the segment against a face
     for i in [-1.0f64, 1.0] {
@@ -471,81 +473,22 @@ pub fn capsule_box(g1: &GeomPose, g2: &GeomPose, margin: f64, con: &mut [Contact
         }
         let d = sub3(&clamped, &end);
         let dist = dot3(&d, &d);
-        if dist < bestdist {
-            bestdist = dist;
-            bestsegmentpos = i;
-            cltype = -2 + i as i32;
+        if dist < best.dist {
+            best.dist = dist;
+            best.segpos = i;
+            best.cltype = -2 + i as i32;
             clface = face;
         }
     }
-
-    // the segment against each edge
-    for j in 0..3 {
-        for i in 0..8usize {
-            if i & (1 << j) != 0 {
-                continue;
-            }
-            let sgn = |bit: usize| if i & bit != 0 { 1.0 } else { -1.0 };
-            let mut corner = [sgn(1) * size2[0], sgn(2) * size2[1], sgn(4) * size2[2]];
-            corner[j] = 0.0;
-            let dif = sub3(&corner, &pos);
-            let ma = size2[j] * size2[j];
-            let mb = -size2[j] * halfaxis[j];
-            let mc = size1[1] * size1[1];
-            let u = -size2[j] * dif[j];
-            let v = dot3(&halfaxis, &dif);
-            let det = ma * mc - mb * mb;
-            if det.abs() < MINVAL {
-                continue;
-            }
-            let idet = 1.0 / det;
-            let mut x1 = (mc * u - mb * v) * idet;
-            let mut x2 = (ma * v - mb * u) * idet;
-            let (mut s1, mut s2) = (1, 1);
-            if x1 > 1.0 {
-                x1 = 1.0;
-                s1 = 2;
-                x2 = (v - mb) * (1.0 / mc);
-            } else if x1 < -1.0 {
-                x1 = -1.0;
-                s1 = 0;
-                x2 = (v + mb) * (1.0 / mc);
-            }
-            let clamp_x1 = |x1: f64, s1: &mut i32| {
-                if x1 > 1.0 {
-                    *s1 = 2;
-                    1.0
-                } else if x1 < -1.0 {
-                    *s1 = 0;
-                    -1.0
-                } else {
-                    x1
-                }
-            };
-            if x2 > 1.0 {
-                x2 = 1.0;
-                s2 = 2;
-                x1 = clamp_x1((u - mb) * (1.0 / ma), &mut s1);
-            } else if x2 < -1.0 {
-                x2 = -1.0;
-                s2 = 0;
-                x1 = clamp_x1((u + mb) * (1.0 / ma), &mut s1);
-            }
-
-            let mut d = add_scl(&dif, &halfaxis, -x2);
-            d[j] += size2[j] * x1;
-            let dist = dot3(&d, &d);
-            let c1 = s1 * 3 + s2;
-            if dist < bestdist - MINVAL {
-                bestdist = dist;
-                bestsegmentpos = x2;
-                bestboxpos = x1;
-                clcorner = i + (1 << j) * (c1 / 6) as usize;
-                cledge = j;
-                cltype = c1;
-            }
-        }
-    }
+    closest_edges(&pos, &halfaxis, halflength, size2, &mut best);
+    let Closest {
+        segpos: bestsegmentpos,
+        boxpos: bestboxpos,
+        cltype,
+        corner: clcorner,
+        edge: cledge,
+        ..
+    } = best;
 
     if cltype == -4 {
         return 0;
@@ -604,6 +547,139 @@ pub fn capsule_box(g1: &GeomPose, g2: &GeomPose, margin: f64, con: &mut [Contact
         );
     }
     n
+}
+
+/// The closest feature pair found so far in `capsule_box`: squared distance, position on the
+/// segment and on the box edge, type (-3/-1: an end against a face; else the clamping code
+/// s1*3 + s2 of an edge, 0: at -1, 1: inside, 2: at +1), corner and edge axis.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Closest {
+    pub dist: f64,
+    pub segpos: f64,
+    pub boxpos: f64,
+    pub cltype: i32,
+    pub corner: usize,
+    pub edge: usize,
+}
+
+/// The segment (centre `pos`, half axis `halfaxis` of length `halflength`, box frame)
+/// against the 12 box edges, updating `best` in 2.2.2's order (axis j, then corner i with bit
+/// j clear, ascending; a closer edge by more than MINVAL wins). The four edges along one axis
+/// are computed together, each lane choosing its clamps by selection rather than branches.
+pub(crate) fn closest_edges(
+    pos: &Vec3,
+    halfaxis: &Vec3,
+    halflength: f64,
+    size2: &Vec3,
+    best: &mut Closest,
+) {
+    edges_along::<0>(pos, halfaxis, halflength, size2, best);
+    edges_along::<1>(pos, halfaxis, halflength, size2, best);
+    edges_along::<2>(pos, halfaxis, halflength, size2, best);
+}
+
+/// `closest_edges` for the four edges along box axis J (a constant: no array is indexed by a
+/// computed axis, which would go through memory).
+#[inline(always)]
+fn edges_along<const J: usize>(
+    pos: &Vec3,
+    halfaxis: &Vec3,
+    halflength: f64,
+    size2: &Vec3,
+    best: &mut Closest,
+) {
+    let mc = halflength * halflength;
+    let ma = size2[J] * size2[J];
+    let mb = -size2[J] * halfaxis[J];
+    let det = ma * mc - mb * mb;
+    if det.abs() < MINVAL {
+        return;
+    }
+    let (idet, imc, ima) = (1.0 / det, 1.0 / mc, 1.0 / ma);
+    let corners = [0usize, 1, 2, 3, 4, 5, 6, 7].map(|i| i & (1 << J) == 0);
+    let mut lane = [(0.0, 0.0, 0.0, 0); 4];
+    let mut l = 0;
+    for (i, &along) in corners.iter().enumerate() {
+        if !along {
+            continue;
+        }
+        let sgn = |bit: usize| if i & bit != 0 { 1.0 } else { -1.0 };
+        let mut corner = [sgn(1) * size2[0], sgn(2) * size2[1], sgn(4) * size2[2]];
+        corner[J] = 0.0;
+        let dif = sub3(&corner, pos);
+        let u = -size2[J] * dif[J];
+        let v = dot3(halfaxis, &dif);
+        let x1 = (mc * u - mb * v) * idet;
+        let x2 = (ma * v - mb * u) * idet;
+        // x1 clamped first, x2 then following from it
+        let (hi, lo) = (x1 > 1.0, x1 < -1.0);
+        let s1 = if hi {
+            2
+        } else if lo {
+            0
+        } else {
+            1
+        };
+        let x2 = if hi {
+            (v - mb) * imc
+        } else if lo {
+            (v + mb) * imc
+        } else {
+            x2
+        };
+        let x1 = if hi {
+            1.0
+        } else if lo {
+            -1.0
+        } else {
+            x1
+        };
+        // then x2, x1 following from it and clamped (s1 kept where it is not)
+        let (hi, lo) = (x2 > 1.0, x2 < -1.0);
+        let s2 = if hi {
+            2
+        } else if lo {
+            0
+        } else {
+            1
+        };
+        let y = if hi { (u - mb) * ima } else { (u + mb) * ima };
+        let (x1, s1) = match (hi || lo, y > 1.0, y < -1.0) {
+            (false, _, _) => (x1, s1),
+            (true, true, _) => (1.0, 2),
+            (true, false, true) => (-1.0, 0),
+            (true, false, false) => (y, s1),
+        };
+        let x2 = if hi {
+            1.0
+        } else if lo {
+            -1.0
+        } else {
+            x2
+        };
+        let mut d = add_scl(&dif, halfaxis, -x2);
+        d[J] += size2[J] * x1;
+        lane[l] = (dot3(&d, &d), x1, x2, s1 * 3 + s2);
+        l += 1;
+    }
+    l = 0;
+    for (i, &along) in corners.iter().enumerate() {
+        if !along {
+            continue;
+        }
+        let (dist, x1, x2, c1) = lane[l];
+        l += 1;
+        if dist < best.dist - MINVAL {
+            *best = Closest {
+                dist,
+                segpos: x2,
+                boxpos: x1,
+                cltype: c1,
+                corner: i + (1 << J) * (c1 / 6) as usize,
+                edge: J,
+            };
+        }
+    }
 }
 
 /// Second segment position when a box corner is closest (None: capsule points at the corner).

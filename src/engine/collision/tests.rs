@@ -535,3 +535,144 @@ fn bounding_boxes_apart_only_without_contacts() {
         Some(mesh_aabb)
     );
 }
+
+/// The capsule-box edge scan as 2.2.2 runs it, one edge at a time with its branches: the
+/// reference of `closest_edges`.
+fn closest_edges_one_by_one(
+    pos: &Vec3,
+    halfaxis: &Vec3,
+    halflength: f64,
+    size2: &Vec3,
+    best: &mut super::primitive::Closest,
+) {
+    for j in 0..3 {
+        for i in 0..8usize {
+            if i & (1 << j) != 0 {
+                continue;
+            }
+            let sgn = |bit: usize| if i & bit != 0 { 1.0 } else { -1.0 };
+            let mut corner = [sgn(1) * size2[0], sgn(2) * size2[1], sgn(4) * size2[2]];
+            corner[j] = 0.0;
+            let dif = vec3::sub3(&corner, pos);
+            let ma = size2[j] * size2[j];
+            let mb = -size2[j] * halfaxis[j];
+            let mc = halflength * halflength;
+            let u = -size2[j] * dif[j];
+            let v = vec3::dot3(halfaxis, &dif);
+            let det = ma * mc - mb * mb;
+            if det.abs() < MINVAL {
+                continue;
+            }
+            let idet = 1.0 / det;
+            let mut x1 = (mc * u - mb * v) * idet;
+            let mut x2 = (ma * v - mb * u) * idet;
+            let (mut s1, mut s2) = (1, 1);
+            if x1 > 1.0 {
+                x1 = 1.0;
+                s1 = 2;
+                x2 = (v - mb) * (1.0 / mc);
+            } else if x1 < -1.0 {
+                x1 = -1.0;
+                s1 = 0;
+                x2 = (v + mb) * (1.0 / mc);
+            }
+            let clamp_x1 = |x1: f64, s1: &mut i32| {
+                if x1 > 1.0 {
+                    *s1 = 2;
+                    1.0
+                } else if x1 < -1.0 {
+                    *s1 = 0;
+                    -1.0
+                } else {
+                    x1
+                }
+            };
+            if x2 > 1.0 {
+                x2 = 1.0;
+                s2 = 2;
+                x1 = clamp_x1((u - mb) * (1.0 / ma), &mut s1);
+            } else if x2 < -1.0 {
+                x2 = -1.0;
+                s2 = 0;
+                x1 = clamp_x1((u + mb) * (1.0 / ma), &mut s1);
+            }
+            let mut d = [
+                dif[0] + halfaxis[0] * -x2,
+                dif[1] + halfaxis[1] * -x2,
+                dif[2] + halfaxis[2] * -x2,
+            ];
+            d[j] += size2[j] * x1;
+            let dist = vec3::dot3(&d, &d);
+            let c1 = s1 * 3 + s2;
+            if dist < best.dist - MINVAL {
+                *best = super::primitive::Closest {
+                    dist,
+                    segpos: x2,
+                    boxpos: x1,
+                    cltype: c1,
+                    corner: i + (1 << j) * (c1 / 6) as usize,
+                    edge: j,
+                };
+            }
+        }
+    }
+}
+
+/// `closest_edges` (four edges at a time, clamps by selection) finds the edge, positions and
+/// distance of the one-edge-at-a-time scan bit for bit: random segments and boxes, axes along
+/// the box's (degenerate determinants), zero sizes, starting bests that the edges do or do not
+/// beat, and NaN.
+#[test]
+fn capsule_box_edges_as_one_at_a_time() {
+    use super::primitive::{closest_edges, Closest};
+    let mut r = uniform(7);
+    let mut differ = 0;
+    let mut taken = 0;
+    // how often each edge code (s1*3 + s2) wins: every clamping combination is exercised
+    let mut codes = [0; 10];
+    for k in 0..200_000 {
+        let mut v = |s: f64| (2.0 * r() - 1.0) * s;
+        let pos = [v(1.5), v(1.5), v(1.5)];
+        let mut axis = [v(1.0), v(1.0), v(1.0)];
+        if k % 7 == 0 {
+            axis = [0.0; 3];
+            axis[k % 3] = 1.0;
+        }
+        let n = vec3::norm3(&axis).max(1e-300);
+        let halflength = v(1.0).abs();
+        let halfaxis = [
+            axis[0] / n * halflength,
+            axis[1] / n * halflength,
+            axis[2] / n * halflength,
+        ];
+        let mut size2 = [v(1.0).abs(), v(1.0).abs(), v(1.0).abs()];
+        if k % 11 == 0 {
+            size2[k % 3] = 0.0;
+        }
+        let start = Closest {
+            dist: if k % 5 == 0 { v(0.5).abs() } else { 100.0 },
+            segpos: 0.0,
+            boxpos: 0.0,
+            cltype: -4,
+            corner: 0,
+            edge: 0,
+        };
+        let mut pos = pos;
+        if k % 997 == 0 {
+            pos[k % 3] = f64::NAN;
+        }
+        let (mut a, mut b) = (start, start);
+        closest_edges(&pos, &halfaxis, halflength, &size2, &mut a);
+        closest_edges_one_by_one(&pos, &halfaxis, halflength, &size2, &mut b);
+        let same = a.dist.to_bits() == b.dist.to_bits()
+            && a.segpos.to_bits() == b.segpos.to_bits()
+            && a.boxpos.to_bits() == b.boxpos.to_bits()
+            && (a.cltype, a.corner, a.edge) == (b.cltype, b.corner, b.edge);
+        differ += !same as usize;
+        taken += (b.cltype != -4) as usize;
+        codes[b.cltype.clamp(-1, 8) as usize + 1] += 1;
+    }
+    assert_eq!(differ, 0);
+    assert!(taken > 100_000, "{taken}");
+    assert!(codes[1..].iter().all(|&c| c > 100), "{codes:?}");
+}
