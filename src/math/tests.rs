@@ -838,3 +838,48 @@ fn dot4_and_chol_factor_as_one_row_at_a_time() {
         }
     }
 }
+
+/// mul_mat3 and mul_mat3t_mat (zero entries of `a` skipped by selection) give the branchy
+/// skip's bits: random matrices with zeros, signed zeros, infinities and NaN in both.
+#[test]
+fn mat3_products_skip_zeros_as_branches() {
+    let branchy = |a: &Mat3, b: &Mat3, at: bool| {
+        let mut r = [0.0; 9];
+        for i in 0..3 {
+            for k in 0..3 {
+                let s = if at { a[3 * k + i] } else { a[3 * i + k] };
+                if s != 0.0 {
+                    for j in 0..3 {
+                        r[3 * i + j] += b[3 * k + j] * s;
+                    }
+                }
+            }
+        }
+        r
+    };
+    let mut r = uniform(11);
+    let special = [
+        0.0,
+        -0.0,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::NAN,
+        1.0,
+        -1.0,
+    ];
+    let mut pick = |r: &mut dyn FnMut() -> f64| {
+        let u = r();
+        if u < 0.5 {
+            special[(r() * special.len() as f64) as usize % special.len()]
+        } else {
+            4.0 * r() - 2.0
+        }
+    };
+    for _ in 0..20_000 {
+        let a: Mat3 = std::array::from_fn(|_| pick(&mut r));
+        let b: Mat3 = std::array::from_fn(|_| pick(&mut r));
+        let bits = |m: Mat3| m.map(f64::to_bits);
+        assert_eq!(bits(mul_mat3(&a, &b)), bits(branchy(&a, &b, false)));
+        assert_eq!(bits(mul_mat3t_mat(&a, &b)), bits(branchy(&a, &b, true)));
+    }
+}

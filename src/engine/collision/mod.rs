@@ -169,7 +169,7 @@ pub(super) enum Source {
 
 /// The bounding-sphere test of mj_collideGeoms: true when the geoms (g1 of the lower type) are
 /// farther apart than their bounding radii and the margin.
-#[inline]
+#[inline(always)]
 fn spheres_apart(m: &Model, d: &Data, g1: usize, g2: usize, margin: f64) -> bool {
     let (r1, r2) = (m.geom_rbound()[g1], m.geom_rbound()[g2]);
     r1 > 0.0
@@ -179,13 +179,19 @@ fn spheres_apart(m: &Model, d: &Data, g1: usize, g2: usize, margin: f64) -> bool
 
 /// The bounding-box test (`bounds`) of geoms g1 and g2.
 fn boxes_apart(m: &Model, d: &Data, g1: usize, g2: usize, margin: f64) -> bool {
-    let bound = |g: usize| bounds::Bound {
+    bounds::apart(&bound(m, d, g1), &bound(m, d, g2), margin)
+}
+
+/// Geom g's pose and bounds, built in the caller (returned through memory, its fields were
+/// read back before their stores completed).
+#[inline(always)]
+fn bound(m: &Model, d: &Data, g: usize) -> bounds::Bound {
+    bounds::Bound {
         pos: row(d.geom_xpos, g),
         mat: row(d.geom_xmat, g),
         extent: bounds::extent(m.geom_type()[g], &row(m.geom_size(), g), m.geom_rbound()[g]),
         rbound: m.geom_rbound()[g],
-    };
-    bounds::apart(&bound(g1), &bound(g2), margin)
+    }
 }
 
 /// Can this dynamic geom pair give no contact, whatever the broad phase says (no collider for

@@ -17,6 +17,7 @@ pub fn has_collider(t1: i32, t2: i32) -> bool {
     (PLANE..=MESH).contains(&t1) && (PLANE..=MESH).contains(&t2) && !(t1 <= HFIELD && t2 <= HFIELD)
 }
 
+#[inline(always)]
 fn pose(m: &Model, d: &Data, g: usize) -> GeomPose {
     GeomPose {
         pos: row(d.geom_xpos, g),
