@@ -122,7 +122,10 @@ pub fn dof_com(axis: &Vec3, offset: Option<&Vec3>) -> Vec6 {
     }
 }
 
-/// Sum of `n` 6D rows of `dofs` weighted by `vec` (mju_mulDofVec).
+/// Sum of `n` 6D rows of `dofs` weighted by `vec` (mju_mulDofVec; zero weights skipped, by
+/// selection: a sum that starts at +0 is never -0, so adding +0 leaves it, and only 0 * inf
+/// or 0 * NaN is kept out). Inlined: its result read back from memory just written stalled.
+#[inline(always)]
 pub fn mul_dof_vec(dofs: &[f64], vec: &[f64], n: usize) -> Vec6 {
     let mut r = [0.0; 6];
     if n == 1 {
@@ -130,12 +133,9 @@ pub fn mul_dof_vec(dofs: &[f64], vec: &[f64], n: usize) -> Vec6 {
             r[k] = dofs[k] * vec[0];
         }
     } else if n > 1 {
-        for j in 0..n {
-            let s = vec[j];
-            if s != 0.0 {
-                for k in 0..6 {
-                    r[k] += dofs[6 * j + k] * s;
-                }
+        for (row, &s) in dofs[..6 * n].chunks_exact(6).zip(&vec[..n]) {
+            for k in 0..6 {
+                r[k] += if s != 0.0 { row[k] * s } else { 0.0 };
             }
         }
     }

@@ -839,10 +839,10 @@ fn dot4_and_chol_factor_as_one_row_at_a_time() {
     }
 }
 
-/// mul_mat3 and mul_mat3t_mat (zero entries of `a` skipped by selection) give the branchy
-/// skip's bits: random matrices with zeros, signed zeros, infinities and NaN in both.
+/// mul_mat3, mul_mat3t_mat and mul_dof_vec (zero entries or weights skipped by selection) give
+/// the branchy skip's bits: random values with zeros, signed zeros, infinities and NaN.
 #[test]
-fn mat3_products_skip_zeros_as_branches() {
+fn small_products_skip_zeros_as_branches() {
     let branchy = |a: &Mat3, b: &Mat3, at: bool| {
         let mut r = [0.0; 9];
         for i in 0..3 {
@@ -881,5 +881,24 @@ fn mat3_products_skip_zeros_as_branches() {
         let bits = |m: Mat3| m.map(f64::to_bits);
         assert_eq!(bits(mul_mat3(&a, &b)), bits(branchy(&a, &b, false)));
         assert_eq!(bits(mul_mat3t_mat(&a, &b)), bits(branchy(&a, &b, true)));
+        // mul_dof_vec: 1 to 3 rows of a and b as six-vectors, weighted by b's last entries
+        let dofs: Vec<f64> = a.iter().chain(&b).copied().collect();
+        for n in 1..=3 {
+            let w = &b[9 - n..];
+            // one row: scaled as it is (its -0 kept); more: summed from +0, zero weights skipped
+            let mut want: [f64; 6] = std::array::from_fn(|k| dofs[k] * w[0]);
+            if n > 1 {
+                want = [0.0; 6];
+            }
+            for j in 0..n {
+                if n > 1 && w[j] != 0.0 {
+                    for k in 0..6 {
+                        want[k] += dofs[6 * j + k] * w[j];
+                    }
+                }
+            }
+            let got = spatial::mul_dof_vec(&dofs, w, n);
+            assert_eq!(got.map(f64::to_bits), want.map(f64::to_bits), "{n}");
+        }
     }
 }

@@ -14,6 +14,7 @@ const SLACK: f64 = 1e-9;
 /// Sphere around the bounding spheres of a body's geoms, centred at the body's origin:
 /// (centre, radius, largest geom margin). None when some geom has no bounding sphere (planes
 /// and height fields) or a value is not finite (f64::max would pass over NaN).
+#[inline(always)]
 pub(super) fn body_sphere(m: &Model, d: &Data, b: usize) -> Option<(Vec3, f64, f64)> {
     let c = row::<3>(d.xpos, b);
     let adr = m.body_geomadr()[b].max(0) as usize;
