@@ -867,7 +867,7 @@ fn small_products_skip_zeros_as_branches() {
         1.0,
         -1.0,
     ];
-    let mut pick = |r: &mut dyn FnMut() -> f64| {
+    let pick = |r: &mut dyn FnMut() -> f64| {
         let u = r();
         if u < 0.5 {
             special[(r() * special.len() as f64) as usize % special.len()]

@@ -358,7 +358,7 @@ pub fn box_box(g1: &GeomPose, g2: &GeomPose, margin: f64, con: &mut [ContactGeom
         let c = &mut con[i];
         c.dist = points[i][2];
         points[i][2] += hz;
-        c.pos = add3(&mul_mat_vec3(&r, &points[i]), &p);
+        c.pos = add3(&mul_mat_vec3(&r, &points[i]), p);
         c.frame = frame;
     }
     n

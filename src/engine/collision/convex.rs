@@ -3,7 +3,7 @@
 //! perturbations (mjENBL_MULTICCD), and plane-convex contacts with extra mesh vertices.
 
 use super::mpr::{vec3_eq, ConvexPair};
-use super::primitive::{ContactGeom, GeomPose};
+use super::primitive::{ContactGeom, GeomPose, Pose};
 use crate::math::blas::norm;
 use crate::math::misc::{min, sign};
 use crate::math::quat::{axis_angle2quat, quat2mat};
@@ -37,7 +37,7 @@ pub enum Shape<'a> {
 #[derive(Clone, Copy, Debug)]
 pub struct ConvexGeom<'a> {
     pub shape: Shape<'a>,
-    pub pose: GeomPose,
+    pub pose: Pose,
     pub rbound: f64,
 }
 
@@ -377,7 +377,7 @@ fn fix_normal_of(con: &mut ContactGeom, geoms: [Option<&ConvexGeom>; 2]) {
 }
 
 /// Rotates a pose by `rot` about `origin` (in place on copies).
-fn rotate_pose(origin: &Vec3, rot: &Mat3, pose: &mut GeomPose) {
+fn rotate_pose(origin: &Vec3, rot: &Mat3, pose: &mut Pose) {
     pose.mat = mul_mat3(rot, &pose.mat);
     let rel = sub3(origin, &pose.pos);
     let vec = sub3(&mul_mat_vec3(rot, &rel), &rel);
@@ -441,7 +441,7 @@ pub fn plane_convex(
     let dir = [-m1[2], -m1[5], -m1[8]];
     let mut meshindex = -1;
     let vec = support(g2, &dir, 0.0, &mut meshindex);
-    let dist = dot3(&normal, &sub3(&vec, &plane.pos));
+    let dist = dot3(&normal, &sub3(&vec, plane.pos));
     if dist > margin {
         return 0;
     }
@@ -455,7 +455,7 @@ pub fn plane_convex(
     let v = mesh.vert;
     let (pos2, mat2) = (&g2.pose.pos, &g2.pose.mat);
     let locdir = mul_mat_t_vec3(mat2, &dir);
-    let threshold = dot3(&normal, &sub3(pos2, &plane.pos)) - margin;
+    let threshold = dot3(&normal, &sub3(pos2, plane.pos)) - margin;
     let first = con[0].pos;
     let mut count = 1;
     let add = |con: &mut ContactGeom, k: usize| -> usize {
@@ -464,7 +464,7 @@ pub fn plane_convex(
         if dist3(&pnt, &first) < TOLPLANEMESH * g2.rbound {
             return 0;
         }
-        con.dist = dot3(&normal, &sub3(&pnt, &plane.pos));
+        con.dist = dot3(&normal, &sub3(&pnt, plane.pos));
         con.pos = add_scl(&pnt, &normal, -0.5 * con.dist);
         con.frame = [normal[0], normal[1], normal[2], 0.0, 0.0, 0.0];
         1
@@ -530,7 +530,7 @@ pub fn convex_hfield(
     use crate::math::misc::to_int;
     use crate::math::vec3::mul_mat3t_mat;
     let size1 = &hf.size;
-    let (pos1, mat1) = (&hpose.pos, &hpose.mat);
+    let (pos1, mat1) = (hpose.pos, hpose.mat);
 
     // geom position in the heightfield frame, bounding-sphere test
     let mut pos = [0.0; 3];

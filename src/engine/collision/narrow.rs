@@ -3,7 +3,7 @@
 
 use super::boxes;
 use super::convex::{self, ConvexGeom, HField, MeshData, MprOptions, Shape};
-use super::primitive::{self as prim, ContactGeom, GeomPose};
+use super::primitive::{self as prim, ContactGeom, GeomPose, Pose};
 use crate::abi::mjtEnableBit_;
 use crate::engine::geom::*;
 use crate::engine::linalg::row;
@@ -17,13 +17,20 @@ pub fn has_collider(t1: i32, t2: i32) -> bool {
     (PLANE..=MESH).contains(&t1) && (PLANE..=MESH).contains(&t2) && !(t1 <= HFIELD && t2 <= HFIELD)
 }
 
+/// Geom g's pose as the model and data hold it.
 #[inline(always)]
-fn pose(m: &Model, d: &Data, g: usize) -> GeomPose {
+fn pose<'a>(m: &Model<'a>, d: &'a Data, g: usize) -> GeomPose<'a> {
     GeomPose {
-        pos: row(d.geom_xpos, g),
-        mat: row(d.geom_xmat, g),
-        size: row(m.geom_size(), g),
+        pos: row_ref(d.geom_xpos, g),
+        mat: row_ref(d.geom_xmat, g),
+        size: row_ref(m.geom_size(), g),
     }
+}
+
+/// Row i of an array of rows of N.
+#[inline(always)]
+fn row_ref<const N: usize>(a: &[f64], i: usize) -> &[f64; N] {
+    a[N * i..N * i + N].try_into().expect("N values")
 }
 
 fn convex_geom<'a>(m: &Model<'a>, d: &Data, g: usize) -> ConvexGeom<'a> {
@@ -45,7 +52,11 @@ fn convex_geom<'a>(m: &Model<'a>, d: &Data, g: usize) -> ConvexGeom<'a> {
     };
     ConvexGeom {
         shape,
-        pose: pose(m, d, g),
+        pose: Pose {
+            pos: row(d.geom_xpos, g),
+            mat: row(d.geom_xmat, g),
+            size: row(m.geom_size(), g),
+        },
         rbound: m.geom_rbound()[g],
     }
 }

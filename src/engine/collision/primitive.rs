@@ -9,12 +9,31 @@
 use crate::math::vec3::{add3, cross, dist3, dot3, norm3, normalize3, scl3, sub3};
 use crate::math::{Mat3, Vec3, MINVAL};
 
-/// Position, orientation and size of a geom (geom_xpos, geom_xmat, geom_size).
+/// Position, orientation and size of a geom (geom_xpos, geom_xmat, geom_size), read where they
+/// are: a copy made just before a routine reads it stalls on its own stores.
+#[derive(Clone, Copy, Debug)]
+pub struct GeomPose<'a> {
+    pub pos: &'a Vec3,
+    pub mat: &'a Mat3,
+    pub size: &'a Vec3,
+}
+
+/// A pose of one's own (a convex geom's, which MPR rotates; tests).
 #[derive(Clone, Copy, Debug, Default)]
-pub struct GeomPose {
+pub struct Pose {
     pub pos: Vec3,
     pub mat: Mat3,
     pub size: Vec3,
+}
+
+impl Pose {
+    pub fn geom(&self) -> GeomPose<'_> {
+        GeomPose {
+            pos: &self.pos,
+            mat: &self.mat,
+            size: &self.size,
+        }
+    }
 }
 
 /// The geometric part of an mjContact: distance, position and the first two frame rows
@@ -61,8 +80,8 @@ fn plane_sphere_at(
     center: &Vec3,
     radius: f64,
 ) -> usize {
-    con.set_normal(&zaxis(&plane.mat));
-    let cdist = dot3(&sub3(center, &plane.pos), &con.normal());
+    con.set_normal(&zaxis(plane.mat));
+    let cdist = dot3(&sub3(center, plane.pos), &con.normal());
     if cdist > margin + radius {
         return 0;
     }
@@ -75,25 +94,19 @@ fn plane_sphere_at(
 
 /// Plane (g1) and sphere (g2).
 pub fn plane_sphere(g1: &GeomPose, g2: &GeomPose, margin: f64, con: &mut [ContactGeom]) -> usize {
-    plane_sphere_at(&mut con[0], margin, g1, &g2.pos, g2.size[0])
+    plane_sphere_at(&mut con[0], margin, g1, g2.pos, g2.size[0])
 }
 
 /// Plane (g1) and capsule (g2): a sphere test at each end.
 pub fn plane_capsule(g1: &GeomPose, g2: &GeomPose, margin: f64, con: &mut [ContactGeom]) -> usize {
-    let axis = zaxis(&g2.mat);
+    let axis = zaxis(g2.mat);
     let segment = scl3(&axis, g2.size[1]);
-    let n1 = plane_sphere_at(
-        &mut con[0],
-        margin,
-        g1,
-        &add3(&g2.pos, &segment),
-        g2.size[0],
-    );
+    let n1 = plane_sphere_at(&mut con[0], margin, g1, &add3(g2.pos, &segment), g2.size[0]);
     let n2 = plane_sphere_at(
         &mut con[n1],
         margin,
         g1,
-        &sub3(&g2.pos, &segment),
+        &sub3(g2.pos, &segment),
         g2.size[0],
     );
     if n1 > 0 {
@@ -107,8 +120,8 @@ pub fn plane_capsule(g1: &GeomPose, g2: &GeomPose, margin: f64, con: &mut [Conta
 
 /// Plane (g1) and cylinder (g2): up to two rim points and two more on the lower disk.
 pub fn plane_cylinder(g1: &GeomPose, g2: &GeomPose, margin: f64, con: &mut [ContactGeom]) -> usize {
-    let normal = zaxis(&g1.mat);
-    let mut axis = zaxis(&g2.mat);
+    let normal = zaxis(g1.mat);
+    let mut axis = zaxis(g2.mat);
     let (pos2, size2) = (&g2.pos, &g2.size);
 
     let mut prjaxis = dot3(&normal, &axis);
@@ -116,7 +129,7 @@ pub fn plane_cylinder(g1: &GeomPose, g2: &GeomPose, margin: f64, con: &mut [Cont
         axis = scl3(&axis, -1.0);
         prjaxis = -prjaxis;
     }
-    let dist0 = dot3(&sub3(pos2, &g1.pos), &normal);
+    let dist0 = dot3(&sub3(pos2, g1.pos), &normal);
 
     // radial direction towards the plane, scaled to the radius
     let mut vec = sub3(&scl3(&axis, prjaxis), &normal);
@@ -176,8 +189,8 @@ pub fn plane_cylinder(g1: &GeomPose, g2: &GeomPose, margin: f64, con: &mut [Cont
 
 /// Plane (g1) and box (g2): the (at most 4) lowest corners within the margin.
 pub fn plane_box(g1: &GeomPose, g2: &GeomPose, margin: f64, con: &mut [ContactGeom]) -> usize {
-    let norm = zaxis(&g1.mat);
-    let dist = dot3(&sub3(&g2.pos, &g1.pos), &norm);
+    let norm = zaxis(g1.mat);
+    let dist = dot3(&sub3(g2.pos, g1.pos), &norm);
     let s = &g2.size;
     let mut cnt = 0;
     for i in 0..8 {
@@ -186,7 +199,7 @@ pub fn plane_box(g1: &GeomPose, g2: &GeomPose, margin: f64, con: &mut [ContactGe
             if i & 2 != 0 { s[1] } else { -s[1] },
             if i & 4 != 0 { s[2] } else { -s[2] },
         ];
-        let corner = crate::math::vec3::mul_mat_vec3(&g2.mat, &v);
+        let corner = crate::math::vec3::mul_mat_vec3(g2.mat, &v);
         let ldist = dot3(&norm, &corner);
         if dist + ldist > margin || ldist > 0.0 {
             continue;
@@ -195,7 +208,7 @@ pub fn plane_box(g1: &GeomPose, g2: &GeomPose, margin: f64, con: &mut [ContactGe
         c.dist = dist + ldist;
         c.set_normal(&norm);
         c.set_tangent(&[0.0; 3]);
-        c.pos = add3(&add3(&corner, &g2.pos), &scl3(&norm, -c.dist / 2.0));
+        c.pos = add3(&add3(&corner, g2.pos), &scl3(&norm, -c.dist / 2.0));
         cnt += 1;
         if cnt >= 4 {
             return 4;
@@ -237,11 +250,11 @@ pub fn sphere_sphere(g1: &GeomPose, g2: &GeomPose, margin: f64, con: &mut [Conta
     sphere_sphere_at(
         &mut con[0],
         margin,
-        &g1.pos,
-        &g1.mat,
+        g1.pos,
+        g1.mat,
         g1.size[0],
-        &g2.pos,
-        &g2.mat,
+        g2.pos,
+        g2.mat,
         g2.size[0],
     )
 }
@@ -251,17 +264,17 @@ pub fn sphere_capsule(g1: &GeomPose, g2: &GeomPose, margin: f64, con: &mut [Cont
     let m = &g2.mat;
     let h = g2.size[1];
     let axis = [m[2] * h, m[5] * h, m[8] * h];
-    let vec = sub3(&g1.pos, &g2.pos);
+    let vec = sub3(g1.pos, g2.pos);
     let x = clamp1(dot3(&axis, &vec) / dot3(&axis, &axis));
-    let near = add3(&scl3(&axis, x), &g2.pos);
+    let near = add3(&scl3(&axis, x), g2.pos);
     sphere_sphere_at(
         &mut con[0],
         margin,
-        &g1.pos,
-        &g1.mat,
+        g1.pos,
+        g1.mat,
         g1.size[0],
         &near,
-        &g2.mat,
+        g2.mat,
         g2.size[0],
     )
 }
@@ -358,7 +371,7 @@ pub fn capsule_capsule(
 
 /// Sphere (g1) and box (g2).
 pub fn sphere_box(g1: &GeomPose, g2: &GeomPose, margin: f64, con: &mut [ContactGeom]) -> usize {
-    sphere_box_at(&mut con[0], margin, &g1.pos, g1.size[0], g2)
+    sphere_box_at(&mut con[0], margin, g1.pos, g1.size[0], g2)
 }
 
 /// Sphere of radius r at p and box g2.
@@ -366,7 +379,7 @@ fn sphere_box_at(con: &mut ContactGeom, margin: f64, p: &Vec3, r: f64, g2: &Geom
     use crate::math::vec3::{mul_mat_t_vec3, mul_mat_vec3};
     let size2 = &g2.size;
     let size1 = [r];
-    let center = mul_mat_t_vec3(&g2.mat, &sub3(p, &g2.pos));
+    let center = mul_mat_t_vec3(g2.mat, &sub3(p, g2.pos));
     let mut clamped = center;
     for i in 0..3 {
         let l = size2[i];
@@ -415,8 +428,8 @@ fn sphere_box_at(con: &mut ContactGeom, margin: f64, p: &Vec3, r: f64, g2: &Geom
     };
 
     let c = con;
-    c.set_normal(&mul_mat_vec3(&g2.mat, &normal));
-    c.pos = add3(&mul_mat_vec3(&g2.mat, &pos), &g2.pos);
+    c.set_normal(&mul_mat_vec3(g2.mat, &normal));
+    c.pos = add3(&mul_mat_vec3(g2.mat, &pos), g2.pos);
     c.dist = dist - size1[0];
     c.set_tangent(&[0.0; 3]);
     1
@@ -431,8 +444,8 @@ pub fn capsule_box(g1: &GeomPose, g2: &GeomPose, margin: f64, con: &mut [Contact
     let mut secondpos = -4.0;
 
     // capsule center and axis in the box frame
-    let pos = mul_mat_t_vec3(&g2.mat, &sub3(&g1.pos, &g2.pos));
-    let axis = mul_mat_t_vec3(&g2.mat, &zaxis(&g1.mat));
+    let pos = mul_mat_t_vec3(g2.mat, &sub3(g1.pos, g2.pos));
+    let axis = mul_mat_t_vec3(g2.mat, &zaxis(g1.mat));
     let halfaxis = scl3(&axis, halflength);
     let mut axisdir = 0usize;
     for (k, h) in halfaxis.iter().enumerate() {
@@ -534,7 +547,7 @@ pub fn capsule_box(g1: &GeomPose, g2: &GeomPose, margin: f64, con: &mut [Contact
 
     let at = |segpos: f64| {
         let local = add_scl(&pos, &halfaxis, segpos);
-        add3(&mul_mat_vec3(&g2.mat, &local), &g2.pos)
+        add3(&mul_mat_vec3(g2.mat, &local), g2.pos)
     };
     let mut n = sphere_box_at(&mut con[0], margin, &at(bestsegmentpos), size1[0], g2);
     if secondpos > -3.0 {

@@ -67,71 +67,71 @@ fn mpr_spheres_and_boxes() {
 fn primitive_collisions() {
     use super::primitive::*;
     let eye = [1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0];
-    let plane = GeomPose {
+    let plane = Pose {
         pos: [0.0; 3],
         mat: eye,
         size: [0.0; 3],
     };
     let mut con = [ContactGeom::default(); 4];
 
-    let ball = GeomPose {
+    let ball = Pose {
         pos: [0.0, 0.0, 0.08],
         mat: eye,
         size: [0.1, 0.0, 0.0],
     };
-    assert_eq!(plane_sphere(&plane, &ball, 0.0, &mut con), 1);
+    assert_eq!(plane_sphere(&plane.geom(), &ball.geom(), 0.0, &mut con), 1);
     assert!((con[0].dist + 0.02).abs() < 1e-15);
     assert!(close(&con[0].pos, &[0.0, 0.0, -0.01], 1e-15));
     assert_eq!(con[0].frame, [0.0, 0.0, 1.0, 0.0, 0.0, 0.0]);
 
     // box resting 1 mm into the plane: four corners
-    let cube = GeomPose {
+    let cube = Pose {
         pos: [0.0, 0.0, 0.099],
         mat: eye,
         size: [0.1; 3],
     };
-    assert_eq!(plane_box(&plane, &cube, 0.0, &mut con), 4);
+    assert_eq!(plane_box(&plane.geom(), &cube.geom(), 0.0, &mut con), 4);
     assert!(con.iter().all(|c| (c.dist + 0.001).abs() < 1e-12));
 
     // vertical capsule: only the lower end touches, tangent along the axis
-    let cap = GeomPose {
+    let cap = Pose {
         pos: [0.0, 0.0, 0.25],
         mat: eye,
         size: [0.05, 0.2, 0.0],
     };
-    assert_eq!(plane_capsule(&plane, &cap, 0.01, &mut con), 1);
+    assert_eq!(plane_capsule(&plane.geom(), &cap.geom(), 0.01, &mut con), 1);
     assert_eq!(&con[0].frame[3..], &[0.0, 0.0, 1.0]);
 
     // cylinder standing on its disk: one rim point and two more of the inscribed triangle
-    let cyl = GeomPose {
+    let cyl = Pose {
         pos: [0.0, 0.0, 0.099],
         mat: eye,
         size: [0.2, 0.1, 0.0],
     };
-    assert_eq!(plane_cylinder(&plane, &cyl, 0.0, &mut con), 3);
+    assert_eq!(plane_cylinder(&plane.geom(), &cyl.geom(), 0.0, &mut con), 3);
 
     // parallel capsules side by side: two contacts
-    let c1 = GeomPose {
+    let c1 = Pose {
         pos: [0.0; 3],
         mat: eye,
         size: [0.1, 0.3, 0.0],
     };
-    let c2 = GeomPose {
+    let c2 = Pose {
         pos: [0.15, 0.0, 0.0],
         mat: eye,
         size: [0.1, 0.3, 0.0],
     };
-    assert_eq!(capsule_capsule(&c1, &c2, 0.0, &mut con), 2);
+    assert_eq!(capsule_capsule(&c1.geom(), &c2.geom(), 0.0, &mut con), 2);
     assert!((con[0].dist + 0.05).abs() < 1e-15 && con[0].normal() == [1.0, 0.0, 0.0]);
 
-    let s = GeomPose {
+    let s = Pose {
         pos: [0.0, 0.12, 0.2],
         mat: eye,
         size: [0.05, 0.0, 0.0],
     };
-    assert_eq!(sphere_capsule(&s, &c1, 0.0, &mut con), 1);
+    assert_eq!(sphere_capsule(&s.geom(), &c1.geom(), 0.0, &mut con), 1);
     assert!((con[0].dist + 0.03).abs() < 1e-15);
-    assert_eq!(sphere_sphere(&s, &ball, 0.0, &mut con), 0);
+    assert_eq!(sphere_sphere(&s.geom(), &ball.geom(), 0.0, &mut con), 0);
 }
 
 #[test]
@@ -142,44 +142,44 @@ fn box_collisions() {
     let mut con = [ContactGeom::default(); MAX_BOX_CONTACTS];
 
     // stacked cubes overlapping by 1 cm: four corner contacts; 2.2.2 reports half the depth
-    let b1 = GeomPose {
+    let b1 = Pose {
         pos: [0.0; 3],
         mat: eye,
         size: [0.5; 3],
     };
-    let b2 = GeomPose {
+    let b2 = Pose {
         pos: [0.1, 0.05, 0.69],
         mat: eye,
         size: [0.2; 3],
     };
-    let n = box_box(&b1, &b2, 0.0, &mut con);
+    let n = box_box(&b1.geom(), &b2.geom(), 0.0, &mut con);
     assert!(n >= 4, "{n}");
     for c in &con[..n] {
         assert!((c.dist + 0.0).abs() <= 0.0101 && c.dist < 0.0, "{c:?}");
         assert!((c.normal()[2].abs() - 1.0).abs() < 1e-12);
     }
-    let far = GeomPose {
+    let far = Pose {
         pos: [0.0, 0.0, 2.0],
         ..b2
     };
-    assert_eq!(box_box(&b1, &far, 0.0, &mut con), 0);
+    assert_eq!(box_box(&b1.geom(), &far.geom(), 0.0, &mut con), 0);
 
     // sphere resting on a box face, capsule lying on it
-    let s = GeomPose {
+    let s = Pose {
         pos: [0.0, 0.0, 0.59],
         mat: eye,
         size: [0.1, 0.0, 0.0],
     };
-    assert_eq!(sphere_box(&s, &b1, 0.0, &mut con), 1);
+    assert_eq!(sphere_box(&s.geom(), &b1.geom(), 0.0, &mut con), 1);
     assert!((con[0].dist + 0.01).abs() < 1e-12, "{:?}", con[0]);
     assert!(close(&con[0].normal(), &[0.0, 0.0, -1.0], 1e-15));
     let lying = [1.0, 0.0, 0.0, 0.0, 0.0, -1.0, 0.0, 1.0, 0.0];
-    let cap = GeomPose {
+    let cap = Pose {
         pos: [0.0, 0.0, 0.59],
         mat: lying,
         size: [0.1, 0.2, 0.0],
     };
-    assert_eq!(capsule_box(&cap, &b1, 0.0, &mut con), 2);
+    assert_eq!(capsule_box(&cap.geom(), &b1.geom(), 0.0, &mut con), 2);
     assert!(con[..2].iter().all(|c| (c.dist + 0.01).abs() < 1e-12));
 }
 
@@ -195,7 +195,7 @@ fn convex_collisions() {
     let mut con = [ContactGeom::default(); 5];
     let ball = ConvexGeom {
         shape: Shape::Sphere,
-        pose: GeomPose {
+        pose: Pose {
             pos: [0.0, 0.0, 0.29],
             mat: eye,
             size: [0.1, 0.0, 0.0],
@@ -204,7 +204,7 @@ fn convex_collisions() {
     };
     let block = ConvexGeom {
         shape: Shape::Box,
-        pose: GeomPose {
+        pose: Pose {
             pos: [0.0; 3],
             mat: eye,
             size: [0.2; 3],
@@ -227,20 +227,20 @@ fn convex_collisions() {
             vert: &vert,
             graph: None,
         }),
-        pose: GeomPose {
+        pose: Pose {
             pos: [0.0; 3],
             mat: eye,
             size: [0.0; 3],
         },
         rbound: 0.4,
     };
-    let plane = GeomPose {
+    let plane = Pose {
         pos: [0.0; 3],
         mat: eye,
         size: [0.0; 3],
     };
     let mut pc = [ContactGeom::default(); 3];
-    assert_eq!(plane_convex(&plane, &tet, 0.0, &mut pc), 1);
+    assert_eq!(plane_convex(&plane.geom(), &tet, 0.0, &mut pc), 1);
     assert_eq!(pc[0].dist, -0.05000000074505806);
     let mut idx = -1;
     assert_eq!(
@@ -262,14 +262,14 @@ fn heightfield_collision() {
         ncol: 4,
         data: &data,
     };
-    let ground = GeomPose {
+    let ground = Pose {
         pos: [0.0; 3],
         mat: eye,
         size: [0.0; 3],
     };
     let ball = ConvexGeom {
         shape: Shape::Sphere,
-        pose: GeomPose {
+        pose: Pose {
             pos: [0.1, 0.2, 0.19],
             mat: eye,
             size: [0.1, 0.0, 0.0],
@@ -281,7 +281,7 @@ fn heightfield_collision() {
         tolerance: 1e-6,
     };
     let mut con = [ContactGeom::default(); MAX_CONTACT_PAIR];
-    let n = convex_hfield(&hf, &ground, &ball, 0.0, &opt, &mut con);
+    let n = convex_hfield(&hf, &ground.geom(), &ball, 0.0, &opt, &mut con);
     assert!(n >= 1);
     // flat surface at z = 0.1: the sphere sinks 1 cm
     assert!(
@@ -290,13 +290,16 @@ fn heightfield_collision() {
         &con[..n]
     );
     let high = ConvexGeom {
-        pose: GeomPose {
+        pose: Pose {
             pos: [0.1, 0.2, 0.5],
             ..ball.pose
         },
         ..ball
     };
-    assert_eq!(convex_hfield(&hf, &ground, &high, 0.0, &opt, &mut con), 0);
+    assert_eq!(
+        convex_hfield(&hf, &ground.geom(), &high, 0.0, &opt, &mut con),
+        0
+    );
 }
 
 thread_local! {
@@ -422,7 +425,7 @@ fn frameless_broadphase_gives_the_sweeps_contacts() {
 fn bounding_boxes_apart_only_without_contacts() {
     use super::bounds::{self, Bound};
     use super::convex::{self, ConvexGeom, MeshData, MprOptions, Shape};
-    use super::primitive::{capsule_box, ContactGeom, GeomPose};
+    use super::primitive::{capsule_box, ContactGeom, Pose};
     use crate::engine::geom::*;
     use crate::math::quat::{normalize4, quat2mat};
 
@@ -461,7 +464,7 @@ fn bounding_boxes_apart_only_without_contacts() {
         }
         let mut pose = |shift: f64| {
             let q = [rnd() - 0.5, rnd() - 0.5, rnd() - 0.5, rnd() - 0.5];
-            GeomPose {
+            Pose {
                 pos: [
                     shift * (rnd() - 0.5),
                     shift * (rnd() - 0.5),
@@ -490,14 +493,14 @@ fn bounding_boxes_apart_only_without_contacts() {
                 graph: None,
             }),
         };
-        let rbound = |t: i32, p: &GeomPose| {
+        let rbound = |t: i32, p: &Pose| {
             if t == MESH {
                 mesh_rbound
             } else {
                 norm3(&bounds::extent(t, &p.size, 0.0).unwrap())
             }
         };
-        let bound = |t: i32, p: &GeomPose| Bound {
+        let bound = |t: i32, p: &Pose| Bound {
             pos: p.pos,
             mat: p.mat,
             extent: bounds::extent(t, &p.size, rbound(t, p)),
@@ -505,9 +508,9 @@ fn bounding_boxes_apart_only_without_contacts() {
         };
         let mut con = [ContactGeom::default(); convex::MAX_CONTACT_PAIR];
         let n = if (t1, t2) == (CAPSULE, BOX) {
-            capsule_box(&p1, &p2, margin, &mut con)
+            capsule_box(&p1.geom(), &p2.geom(), margin, &mut con)
         } else {
-            let g = |t: i32, p: &GeomPose| ConvexGeom {
+            let g = |t: i32, p: &Pose| ConvexGeom {
                 shape: shape(t),
                 pose: *p,
                 rbound: rbound(t, p),
