@@ -679,3 +679,53 @@ fn capsule_box_edges_as_one_at_a_time() {
     assert!(taken > 100_000, "{taken}");
     assert!(codes[1..].iter().all(|&c| c > 100), "{codes:?}");
 }
+
+/// beyond_reach (squares outside a 1e-12 band) decides as the square root does: random
+/// distances around the reach, within a few ulps of it or of its square, zeros, the extremes
+/// and NaN.
+#[test]
+fn beyond_reach_as_the_square_root() {
+    use super::beyond_reach;
+    let mut r = uniform(23);
+    let special = [
+        0.0,
+        -0.0,
+        1e-160,
+        1e-150,
+        1e150,
+        1e160,
+        f64::MIN_POSITIVE,
+        f64::MAX,
+        f64::INFINITY,
+        f64::NAN,
+        -1.0,
+    ];
+    let mut by_squares = 0;
+    for k in 0..2_000_000 {
+        let reach = match k % 10 {
+            0 => special[(r() * special.len() as f64) as usize % special.len()],
+            _ => (10.0f64).powf(12.0 * r() - 6.0),
+        };
+        let dist = match k % 4 {
+            // within a few ulps of the reach
+            0 => f64::from_bits((reach.abs().to_bits() as i64 + (r() * 16.0) as i64 - 8) as u64),
+            1 => reach * (1.0 + (r() - 0.5) * 1e-11),
+            2 => special[(r() * special.len() as f64) as usize % special.len()],
+            _ => reach * 4.0 * r(),
+        };
+        // squares within a few ulps of the reach's square: where a root rounds onto the reach
+        let dist2 = match k % 3 {
+            0 => f64::from_bits(((reach * reach).to_bits() as i64 + (r() * 8.0) as i64 - 4) as u64),
+            _ => dist * dist,
+        };
+        let want = dist2.sqrt() > reach;
+        assert_eq!(
+            beyond_reach(dist2, reach),
+            want,
+            "dist2 {dist2:e} reach {reach:e}"
+        );
+        let r2 = reach * reach;
+        by_squares += (dist2 < r2 * (1.0 - 1e-12) || dist2 > r2 * (1.0 + 1e-12)) as usize;
+    }
+    assert!(by_squares > 800_000, "{by_squares}");
+}
