@@ -143,6 +143,18 @@ pub fn spring_damper(pos0: f64, vel0: f64, k: f64, b: f64, t: f64) -> f64 {
     }
 }
 
+/// x * w, or +0 for a zero weight: the term of a sum that skips zero weights (as 2.2.2's
+/// products do) without a branch. Adding +0 leaves any such sum as it was, since a sum that
+/// starts at +0 is never -0; only x * 0 of an infinite or NaN x is kept out, as the skip does.
+#[inline(always)]
+pub fn weighted(x: f64, w: f64) -> f64 {
+    if w != 0.0 {
+        x * w
+    } else {
+        0.0
+    }
+}
+
 /// a if a <= b, else b (NaN handling as in MuJoCo).
 #[inline]
 pub fn min(a: f64, b: f64) -> f64 {

@@ -1,5 +1,6 @@
 //! 6D spatial vectors [rotation; translation] and 10-element com inertias.
 
+use super::misc::weighted;
 use super::vec3::{cross, mul_mat_t_vec3, sub3};
 use super::{v3, Mat3, Vec3, Vec6};
 
@@ -122,9 +123,8 @@ pub fn dof_com(axis: &Vec3, offset: Option<&Vec3>) -> Vec6 {
     }
 }
 
-/// Sum of `n` 6D rows of `dofs` weighted by `vec` (mju_mulDofVec; zero weights skipped, by
-/// selection: a sum that starts at +0 is never -0, so adding +0 leaves it, and only 0 * inf
-/// or 0 * NaN is kept out). Inlined: its result read back from memory just written stalled.
+/// Sum of `n` 6D rows of `dofs` weighted by `vec` (mju_mulDofVec; zero weights skipped:
+/// `weighted`). Inlined: its result read back from memory just written stalled.
 #[inline(always)]
 pub fn mul_dof_vec(dofs: &[f64], vec: &[f64], n: usize) -> Vec6 {
     let mut r = [0.0; 6];
@@ -135,7 +135,7 @@ pub fn mul_dof_vec(dofs: &[f64], vec: &[f64], n: usize) -> Vec6 {
     } else if n > 1 {
         for (row, &s) in dofs[..6 * n].chunks_exact(6).zip(&vec[..n]) {
             for k in 0..6 {
-                r[k] += if s != 0.0 { row[k] * s } else { 0.0 };
+                r[k] += weighted(row[k], s);
             }
         }
     }

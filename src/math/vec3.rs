@@ -1,5 +1,6 @@
 //! 3D vectors and 3x3 matrices.
 
+use super::misc::weighted;
 use super::{Mat3, Vec3, MINVAL};
 
 #[inline]
@@ -87,9 +88,7 @@ pub fn mul_mat_t_vec3(m: &Mat3, v: &Vec3) -> Vec3 {
     ]
 }
 
-/// a * b, accumulated row by row as mju_mulMatMat does (zero entries of `a` skipped). The
-/// skip is a selection: adding +0 instead leaves every sum as it was (a sum that starts at +0
-/// is never -0), so only b*0 of an infinite or NaN b is kept out.
+/// a * b, accumulated row by row as mju_mulMatMat does (zero entries of `a` skipped: `weighted`).
 #[inline(always)]
 pub fn mul_mat3(a: &Mat3, b: &Mat3) -> Mat3 {
     let mut r = [0.0; 9];
@@ -97,7 +96,7 @@ pub fn mul_mat3(a: &Mat3, b: &Mat3) -> Mat3 {
         for k in 0..3 {
             let s = a[3 * i + k];
             for j in 0..3 {
-                r[3 * i + j] += if s != 0.0 { b[3 * k + j] * s } else { 0.0 };
+                r[3 * i + j] += weighted(b[3 * k + j], s);
             }
         }
     }
@@ -117,8 +116,7 @@ pub fn mul_mat3_t(a: &Mat3, b: &Mat3) -> Mat3 {
     r
 }
 
-/// a^T * b, accumulated as mju_mulMatTMat does (zero entries of `a` skipped, by selection
-/// as in `mul_mat3`).
+/// a^T * b, accumulated as mju_mulMatTMat does (zero entries of `a` skipped: `weighted`).
 #[inline(always)]
 pub fn mul_mat3t_mat(a: &Mat3, b: &Mat3) -> Mat3 {
     let mut r = [0.0; 9];
@@ -126,7 +124,7 @@ pub fn mul_mat3t_mat(a: &Mat3, b: &Mat3) -> Mat3 {
         for j in 0..3 {
             let s = a[3 * i + j];
             for k in 0..3 {
-                r[3 * j + k] += if s != 0.0 { b[3 * i + k] * s } else { 0.0 };
+                r[3 * j + k] += weighted(b[3 * i + k], s);
             }
         }
     }

@@ -5,14 +5,10 @@
 //! tests.
 
 use super::spheres::{beyond, Spheres};
-use super::{assign_margin, can_pair, collide_geoms, narrow, Contacts, Source};
+use super::{assign_margin, can_pair, clearly_beyond, collide_geoms, narrow, Contacts, Source};
 use crate::engine::linalg::row;
 use crate::engine::{Data, EngineError, Model};
 use crate::math::vec3::sub3;
-
-/// A squared distance beyond `FAR` times a squared reach above 1e-100 (its square a normal
-/// number) has a rounded square root beyond the reach.
-const FAR: f64 = 1.0 + 1e-10;
 
 /// Fewest geom pairs of a body pair worth this way (with fewer, the tests one by one are faster).
 pub(super) const MIN_PAIRS: usize = 16;
@@ -98,12 +94,12 @@ fn candidates(m: &Model, d: &Data, g1: usize, geoms2: std::ops::Range<usize>) ->
     for g2 in geoms2.clone() {
         let paired = can_pair(mask1, (contype[g2], conaffinity[g2]));
         let collider = narrow::has_collider(t1, types[g2]);
-        // spheres_apart (symmetric in the two geoms) without its square root
+        // spheres_apart (symmetric in the two geoms) where the squares decide it
         let r2 = rbound[g2];
         let reach = r1 + r2 + assign_margin(m, margin1.max(margins[g2]));
         let dif = sub3(&p1, &row(d.geom_xpos, g2));
         let dist2 = dif[0] * dif[0] + dif[1] * dif[1] + dif[2] * dif[2];
-        let apart = (r1 > 0.0) & (r2 > 0.0) & (reach > 1e-100) & (dist2 > reach * reach * FAR);
+        let apart = (r1 > 0.0) & (r2 > 0.0) & clearly_beyond(dist2, reach);
         bits |= u64::from(paired & collider & !apart) << (g2 - geoms2.start);
     }
     bits

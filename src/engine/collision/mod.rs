@@ -182,16 +182,34 @@ fn spheres_apart(m: &Model, d: &Data, g1: usize, g2: usize, margin: f64) -> bool
 /// latency is saved. Reaches whose square under- or overflows, and NaN, take the root.
 #[inline(always)]
 pub(super) fn beyond_reach(dist2: f64, reach: f64) -> bool {
-    if reach > 1e-150 && reach < 1e150 {
-        let r2 = reach * reach;
-        if dist2 < r2 * (1.0 - 1e-12) {
-            return false;
-        }
-        if dist2 > r2 * (1.0 + 1e-12) {
-            return true;
-        }
+    if clearly_within(dist2, reach) {
+        return false;
+    }
+    if clearly_beyond(dist2, reach) {
+        return true;
     }
     dist2.sqrt() > reach
+}
+
+/// Relative band around reach * reach inside which only the root decides (`beyond_reach`).
+const ROOT_BAND: f64 = 1e-12;
+
+/// Is reach's square a normal, finite number (false for NaN)?
+#[inline(always)]
+fn square_in_range(reach: f64) -> bool {
+    (reach > 1e-150) & (reach < 1e150)
+}
+
+/// sqrt(dist2) > reach, certain from the squares alone (false where it is not; no branch).
+#[inline(always)]
+pub(super) fn clearly_beyond(dist2: f64, reach: f64) -> bool {
+    square_in_range(reach) & (dist2 > reach * reach * (1.0 + ROOT_BAND))
+}
+
+/// sqrt(dist2) <= reach, certain from the squares alone (false where it is not; no branch).
+#[inline(always)]
+fn clearly_within(dist2: f64, reach: f64) -> bool {
+    square_in_range(reach) & (dist2 < reach * reach * (1.0 - ROOT_BAND))
 }
 
 /// The bounding-box test (`bounds`) of geoms g1 and g2.

@@ -609,79 +609,36 @@ fn edges_along<const J: usize>(
         return;
     }
     let (idet, imc, ima) = (1.0 / det, 1.0 / mc, 1.0 / ma);
-    let corners = [0usize, 1, 2, 3, 4, 5, 6, 7].map(|i| i & (1 << J) == 0);
-    let mut lane = [(0.0, 0.0, 0.0, 0); 4];
-    let mut l = 0;
-    for (i, &along) in corners.iter().enumerate() {
-        if !along {
-            continue;
-        }
+    // the corners with bit J clear, ascending: l's bits with a zero inserted at J
+    let corners = [0usize, 1, 2, 3].map(|l| (l >> J) << (J + 1) | (l & ((1 << J) - 1)));
+    let lanes = corners.map(|i| {
         let sgn = |bit: usize| if i & bit != 0 { 1.0 } else { -1.0 };
         let mut corner = [sgn(1) * size2[0], sgn(2) * size2[1], sgn(4) * size2[2]];
         corner[J] = 0.0;
         let dif = sub3(&corner, pos);
         let u = -size2[J] * dif[J];
         let v = dot3(halfaxis, &dif);
-        let x1 = (mc * u - mb * v) * idet;
-        let x2 = (ma * v - mb * u) * idet;
+        let (x1, x2) = ((mc * u - mb * v) * idet, (ma * v - mb * u) * idet);
         // x1 clamped first, x2 then following from it
         let (hi, lo) = (x1 > 1.0, x1 < -1.0);
-        let s1 = if hi {
-            2
-        } else if lo {
-            0
-        } else {
-            1
-        };
-        let x2 = if hi {
-            (v - mb) * imc
-        } else if lo {
-            (v + mb) * imc
-        } else {
-            x2
-        };
-        let x1 = if hi {
-            1.0
-        } else if lo {
-            -1.0
-        } else {
-            x1
-        };
+        let s1 = clamped(hi, lo, 2, 0, 1);
+        let x2 = clamped(hi, lo, (v - mb) * imc, (v + mb) * imc, x2);
+        let x1 = clamped(hi, lo, 1.0, -1.0, x1);
         // then x2, x1 following from it and clamped (s1 kept where it is not)
         let (hi, lo) = (x2 > 1.0, x2 < -1.0);
-        let s2 = if hi {
-            2
-        } else if lo {
-            0
+        let s2 = clamped(hi, lo, 2, 0, 1);
+        let (x1, s1) = if hi || lo {
+            let y = if hi { (u - mb) * ima } else { (u + mb) * ima };
+            clamped(y > 1.0, y < -1.0, (1.0, 2), (-1.0, 0), (y, s1))
         } else {
-            1
+            (x1, s1)
         };
-        let y = if hi { (u - mb) * ima } else { (u + mb) * ima };
-        let (x1, s1) = match (hi || lo, y > 1.0, y < -1.0) {
-            (false, _, _) => (x1, s1),
-            (true, true, _) => (1.0, 2),
-            (true, false, true) => (-1.0, 0),
-            (true, false, false) => (y, s1),
-        };
-        let x2 = if hi {
-            1.0
-        } else if lo {
-            -1.0
-        } else {
-            x2
-        };
+        let x2 = clamped(hi, lo, 1.0, -1.0, x2);
         let mut d = add_scl(&dif, halfaxis, -x2);
         d[J] += size2[J] * x1;
-        lane[l] = (dot3(&d, &d), x1, x2, s1 * 3 + s2);
-        l += 1;
-    }
-    l = 0;
-    for (i, &along) in corners.iter().enumerate() {
-        if !along {
-            continue;
-        }
-        let (dist, x1, x2, c1) = lane[l];
-        l += 1;
+        (dot3(&d, &d), x1, x2, s1 * 3 + s2)
+    });
+    for (i, (dist, x1, x2, c1)) in corners.into_iter().zip(lanes) {
         if dist < best.dist - MINVAL {
             *best = Closest {
                 dist,
@@ -692,6 +649,19 @@ fn edges_along<const J: usize>(
                 edge: J,
             };
         }
+    }
+}
+
+/// A clamp's three outcomes: `above` where `hi`, `below` where `lo`, else `inside` (chosen by
+/// selection; each argument is computed either way).
+#[inline(always)]
+fn clamped<T>(hi: bool, lo: bool, above: T, below: T, inside: T) -> T {
+    if hi {
+        above
+    } else if lo {
+        below
+    } else {
+        inside
     }
 }
 
