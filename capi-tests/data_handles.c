@@ -1,6 +1,7 @@
 // mjData handled every way a program may (tests/data_handles.rs): copies made and copied
 // into, a model copy used with the same data, a struct copied by value, data freed and made
-// again, resets. Prints a hash of the state after each, identical on both libraries.
+// again, resets. Prints a hash of the state after each, identical on both libraries, and of
+// the whole array buffer after resets (fresh data, pages written here and there, all of it).
 #include <mujoco/mujoco.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -21,6 +22,28 @@ static void show(const char* what, const mjModel* m, const mjData* d) {
   h = hash(h, d->efc_force, sizeof(mjtNum) * d->nefc);
   printf("%-28s ncon %3d nefc %3d maxuse_stack %6d hash %016llx\n", what, d->ncon, d->nefc,
          d->maxuse_stack, (unsigned long long)h);
+}
+
+// The whole buffer after mj_resetData: arrays and the padding between them are zeros but
+// for the state the reset sets, written pages and never touched ones alike.
+static void show_buffer(const char* what, const mjModel* m, mjData* d) {
+  mj_resetData(m, d);
+  printf("%-28s nbuffer %8d hash %016llx\n", what, d->nbuffer,
+         (unsigned long long)hash(14695981039346656037ull, d->buffer, d->nbuffer));
+}
+
+static void buffer_resets(const mjModel* m) {
+  mjData* d = mj_makeData(m);
+  show_buffer("fresh, reset", m, d);
+  // a page in three written, the last bytes spilling into the next page
+  size_t n = d->nbuffer, page = 4096;
+  for (size_t at = 0; at < n; at += 3 * page) {
+    memset((char*)d->buffer + at, 0xa5, n - at < page + 100 ? n - at : page + 100);
+  }
+  show_buffer("a page in three, reset", m, d);
+  memset(d->buffer, 0x5a, n);
+  show_buffer("all written, reset", m, d);
+  mj_deleteData(d);
 }
 
 static void steps(const mjModel* m, mjData* d, int n) {
@@ -77,6 +100,7 @@ int main(int argc, char** argv) {
     show("keyframe, 25 steps", m2, d1);
 
     mj_deleteData(d1);
+    buffer_resets(m2);
     mj_deleteModel(m2);
     mj_deleteModel(m);
   }

@@ -3,7 +3,7 @@
 
 use super::view::ViewSlot;
 use super::*;
-use crate::runtime::memory::{alloc_large, free, free_large, malloc, malloc_zeroed};
+use crate::runtime::memory::{alloc_large, free, free_large, malloc, maps};
 use std::os::raw::c_void;
 
 const ALIGN: usize = 64;
@@ -174,15 +174,17 @@ pub fn alloc_data(m: &mjModel) -> Result<*mut mjData, String> {
     let nstack = m.nstack.max(0) as usize;
     let d = malloc(std::mem::size_of::<mjData>()) as *mut mjData;
     // both zeroed, so that no view ever reads uninitialized memory (scratch taken unzeroed by
-    // Arena::alloc_stale, arrays before mj_resetData); a large stack is fresh pages, untouched
+    // Arena::alloc_stale, arrays before mj_resetData); large ones are fresh pages, untouched
     // until the simulation reaches them
-    let buffer = malloc_zeroed(ViewSlot::offset(nbuffer) + std::mem::size_of::<ViewSlot>());
+    let buffer_size = data_buffer_size(nbuffer);
+    let mapped = maps(buffer_size);
+    let buffer = alloc_large(buffer_size, false);
     let stack = alloc_large((nstack * 8).max(1), false);
     if d.is_null() || buffer.is_null() || stack.is_null() {
         // SAFETY: each is NULL or a fresh allocation.
         unsafe {
             free(d as *mut c_void);
-            free(buffer);
+            free_large(buffer, buffer_size);
             free_large(stack, (nstack * 8).max(1));
         }
         return Err("Could not allocate mjData".into());
@@ -196,15 +198,21 @@ pub fn alloc_data(m: &mjModel) -> Result<*mut mjData, String> {
         (*d).stack = stack as *mut f64;
         set_data_pointers(m, &mut *d);
         ViewSlot::init(&*d);
+        ViewSlot::set_mapped(&*d, mapped);
     }
     Ok(d)
+}
+
+/// Bytes of an mjData buffer of `nbuffer`: the arrays, then the view slot.
+fn data_buffer_size(nbuffer: usize) -> usize {
+    ViewSlot::offset(nbuffer) + std::mem::size_of::<ViewSlot>()
 }
 
 /// # Safety
 /// `d` is NULL or came from `alloc_data`.
 pub unsafe fn delete_data(d: *mut mjData) {
     if !d.is_null() {
-        free((*d).buffer);
+        free_large((*d).buffer, data_buffer_size((*d).nbuffer.max(0) as usize));
         free_large(
             (*d).stack as *mut c_void,
             ((*d).nstack.max(0) as usize * 8).max(1),

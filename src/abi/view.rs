@@ -5,6 +5,7 @@
 //! lists give, which `mj_makeModel`/`mj_makeData` guarantee.
 
 use super::*;
+use crate::runtime::memory::PageMap;
 
 /// A NULL pointer (only ever paired with length 0) gives the empty slice.
 #[inline(always)]
@@ -160,6 +161,35 @@ macro_rules! data_views {
                 Arena { free: &mut stack[pstack..], used: pstack, peak: pstack }
             }
 
+            /// Zeroes the buffer, as mj_resetData: every array, and the padding between
+            /// them through the buffer's own pointer. In a buffer mapped for this data, the
+            /// pages never written are skipped (zeros already, and kept out of resident memory).
+            pub fn clear_arrays(&mut self) {
+                // SAFETY: the slot of data from `alloc_data` (`Data::new`'s contract), whose
+                // arrays lie in its buffer in this order; each array is written through its
+                // own slice, the gaps between them (no slice's) through the buffer pointer;
+                // all-zero bytes are a valid value of every element type (numbers, mjContact).
+                unsafe {
+                    let slot = &*ViewSlot::of(self.raw);
+                    let mut pages = PageMap::new(slot.owns(self.raw) && slot.mapped);
+                    let buffer = self.raw.buffer as *mut u8;
+                    let mut done = 0usize;
+                    let gap = |pages: &mut PageMap, from: usize, to: usize| {
+                        if to > from {
+                            pages.clear(buffer.add(from), to - from);
+                        }
+                    };
+                    $(
+                        let array = self.$name.as_mut_ptr() as *mut u8;
+                        let offset = array.offset_from(buffer) as usize;
+                        gap(&mut pages, done, offset);
+                        pages.clear(array, std::mem::size_of_val(self.$name));
+                        done = offset + std::mem::size_of_val(self.$name);
+                    )*
+                    gap(&mut pages, done, self.raw.nbuffer as usize);
+                }
+            }
+
             /// Runs `f` on a reborrowed view whose stack allocations are released afterwards
             /// (2.2.2's mjMARKSTACK / mjFREESTACK around a call); their high-water mark stays.
             pub fn scoped<R>(&mut self, f: impl FnOnce(&mut Data<'_>) -> R) -> R {
@@ -220,6 +250,9 @@ pub struct ViewSlot {
     model: *const mjModel,
     /// Lent out by `Data::with` (its arrays may be swapped out for a while).
     busy: bool,
+    /// The buffer is a mapping of its own (`memory::alloc_large`): pages never written read
+    /// as zeros.
+    mapped: bool,
     image: std::mem::MaybeUninit<Data<'static>>,
 }
 
@@ -270,6 +303,14 @@ impl ViewSlot {
         (*slot).buffer = d.buffer;
         (*slot).model = std::ptr::null();
         (*slot).busy = false;
+    }
+
+    /// Records whether `d`'s buffer is a mapping of its own.
+    ///
+    /// # Safety
+    /// As `init`.
+    pub unsafe fn set_mapped(d: &mjData, mapped: bool) {
+        (*Self::of(d)).mapped = mapped;
     }
 
     fn owns(&self, d: &mjData) -> bool {

@@ -47,74 +47,10 @@ pub fn warning(d: &mut mjData, kind: i32, info: i32) -> Result<(), EngineError> 
     Ok(())
 }
 
-trait Zero {
-    fn zero() -> Self;
-}
-impl Zero for f64 {
-    fn zero() -> Self {
-        0.0
-    }
-}
-impl Zero for f32 {
-    fn zero() -> Self {
-        0.0
-    }
-}
-impl Zero for i32 {
-    fn zero() -> Self {
-        0
-    }
-}
-impl Zero for u8 {
-    fn zero() -> Self {
-        0
-    }
-}
-impl Zero for i8 {
-    fn zero() -> Self {
-        0
-    }
-}
-impl Zero for mjContact {
-    fn zero() -> Self {
-        mjContact {
-            dist: 0.0,
-            pos: [0.0; 3],
-            frame: [0.0; 9],
-            includemargin: 0.0,
-            friction: [0.0; 5],
-            solref: [0.0; mjNREF],
-            solimp: [0.0; mjNIMP],
-            mu: 0.0,
-            H: [0.0; 36],
-            dim: 0,
-            geom1: 0,
-            geom2: 0,
-            exclude: 0,
-            efc_address: 0,
-        }
-    }
-}
-
-fn zero_fill<T: Zero>(s: &mut [T]) {
-    for x in s {
-        *x = T::zero();
-    }
-}
-
-macro_rules! zero_data_arrays {
-    ($(($t:ident, $name:ident, $d1:ident, $($d2:tt)+)),* $(,)?) => {
-        fn zero_arrays(d: &mut Data) {
-            $(zero_fill(d.$name);)*
-        }
-    };
-}
-crate::mjdata_pointers!(zero_data_arrays);
-
 /// mj_resetData on the views: clear header and arrays, qpos = qpos0, mocap from bodies.
 pub fn reset_data(m: &Model, d: &mut Data) {
     clear_header(d);
-    zero_arrays(d);
+    d.clear_arrays();
     reset_state(m, d);
 }
 

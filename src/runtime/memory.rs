@@ -72,13 +72,18 @@ const LARGE_BLOCK: usize = 1 << 20;
 /// and starts the arrays mid-page (at offset 64, cheetah stepped 2-3% slower).
 const MAP_OFFSET: usize = 2048 + 64;
 
+/// Whether `alloc_large(size, _)` maps a block of its own now (no user allocator, large).
+pub fn maps(size: usize) -> bool {
+    // SAFETY: reads the handler global, as the C library does.
+    let user = unsafe { mju_user_malloc };
+    user.is_none() && size >= LARGE_BLOCK
+}
+
 /// `size` zero bytes: through the user allocator (then cleared), else mapped when large
 /// (64-byte aligned; `populate`: its pages in at once), else from the C heap.
 pub fn alloc_large(size: usize, populate: bool) -> *mut c_void {
     let populate = if populate { libc::MAP_POPULATE } else { 0 };
-    // SAFETY: reads the handler global, as the C library does.
-    let user = unsafe { mju_user_malloc };
-    if user.is_some() || size < LARGE_BLOCK {
+    if !maps(size) {
         return malloc_zeroed(size);
     }
     let ptr = size
@@ -105,6 +110,117 @@ pub fn alloc_large(size: usize, populate: bool) -> *mut c_void {
         error("Could not allocate memory");
     }
     ptr
+}
+
+/// Pages of a block mapped by `alloc_large` that were never written (nor swapped out) read as
+/// zeros without being there: the kernel's page map (/proc/self/pagemap) says which, read a
+/// chunk at a time as a walk over the block goes forward. Where the map cannot be read, every
+/// page counts as touched.
+pub(crate) struct PageMap {
+    fd: i32,
+    /// log2 of the page size.
+    shift: u32,
+    /// Page number of `entries[0]`, and how many entries were read.
+    first: usize,
+    len: usize,
+    entries: [u64; 512],
+}
+
+impl PageMap {
+    /// Present (bit 63) or swapped out (bit 62): the page holds what was written to it.
+    const HELD: u64 = 3 << 62;
+
+    /// A map of the process's pages; `mapped` false (a block not from our own mapping, whose
+    /// untouched pages need not read as zeros) counts every page as touched.
+    pub fn new(mapped: bool) -> Self {
+        // SAFETY: sysconf, and open of a NUL-terminated path (closed on drop). Opened for each
+        // clearing: a descriptor kept open would read its opener's map in a forked child.
+        let (fd, page) = unsafe {
+            let page = libc::sysconf(libc::_SC_PAGESIZE) as usize;
+            if !mapped || !page.is_power_of_two() {
+                (-1, 4096)
+            } else {
+                let path = c"/proc/self/pagemap";
+                (
+                    libc::open(path.as_ptr(), libc::O_RDONLY | libc::O_CLOEXEC),
+                    page,
+                )
+            }
+        };
+        let shift = page.trailing_zeros();
+        PageMap {
+            fd,
+            shift,
+            first: 0,
+            len: 0,
+            entries: [0; 512],
+        }
+    }
+
+    /// Whether the page holding address `addr` was never written.
+    fn untouched(&mut self, addr: usize) -> bool {
+        if self.fd < 0 {
+            return false;
+        }
+        let page = addr >> self.shift;
+        if page < self.first || page >= self.first + self.len {
+            let bytes = std::mem::size_of_val(&self.entries);
+            // SAFETY: reads into our own array of `bytes` bytes.
+            let n = unsafe {
+                libc::pread(
+                    self.fd,
+                    self.entries.as_mut_ptr() as *mut c_void,
+                    bytes,
+                    (page * 8) as libc::off_t,
+                )
+            };
+            self.first = page;
+            self.len = n.max(0) as usize / 8;
+            if self.len == 0 {
+                // not readable after all: every page counts as touched from here on
+                // SAFETY: our own descriptor, closed once.
+                unsafe { libc::close(self.fd) };
+                self.fd = -1;
+                return false;
+            }
+        }
+        self.entries[page - self.first] & Self::HELD == 0
+    }
+
+    /// Zeroes `len` bytes at `ptr`, skipping the pages never written (zeros already, and left
+    /// out of resident memory).
+    ///
+    /// # Safety
+    /// `ptr..ptr + len` is writable, and lies in a block of `alloc_large` that mapped its own
+    /// pages when this map was made with `mapped` true.
+    pub unsafe fn clear(&mut self, ptr: *mut u8, len: usize) {
+        if self.fd < 0 {
+            return std::ptr::write_bytes(ptr, 0, len);
+        }
+        let (mut at, end, shift) = (ptr as usize, ptr as usize + len, self.shift);
+        let next = |a: usize| (((a >> shift) + 1) << shift).min(end);
+        while at < end {
+            if self.untouched(at) {
+                at = next(at);
+                continue;
+            }
+            let mut stop = next(at);
+            while stop < end && !self.untouched(stop) {
+                stop = next(stop);
+            }
+            std::ptr::write_bytes(ptr.add(at - ptr as usize), 0, stop - at);
+            at = stop;
+        }
+    }
+}
+
+impl Drop for PageMap {
+    fn drop(&mut self) {
+        if self.fd >= 0 {
+            // SAFETY: our own descriptor, closed once.
+            unsafe { libc::close(self.fd) };
+        }
+    }
 }
 
 /// Frees a block from `alloc_large` of the same `size`.
@@ -150,5 +266,63 @@ pub fn release_free_heap(model_bytes: usize) {
     // SAFETY: glibc's trim only returns unused heap pages; no block is moved or freed.
     unsafe {
         libc::malloc_trim(0);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Clearing a mapped block: every byte of the range is zero afterwards (pages written,
+    /// written and paged out, written in part, never written), the bytes around it are kept,
+    /// and the pages never written are still not there.
+    #[test]
+    fn clearing_skips_only_pages_never_written() {
+        // SAFETY: sysconf.
+        let page = unsafe { libc::sysconf(libc::_SC_PAGESIZE) } as usize;
+        let size = 512 * page;
+        assert!(maps(size));
+        let block = alloc_large(size, false) as *mut u8;
+        // SAFETY: all within the fresh block of `size` bytes.
+        unsafe {
+            let bytes =
+                |from: usize, to: usize| std::slice::from_raw_parts_mut(block.add(from), to - from);
+            bytes(0, 100).fill(7);
+            bytes(page, 2 * page).fill(1);
+            bytes(5 * page - 8, 5 * page + 8).fill(2);
+            bytes(20 * page, 23 * page).fill(3);
+            bytes(40 * page, 41 * page).fill(4);
+            // to swap where there is swap (it stays otherwise), which must count as written
+            libc::madvise(
+                block.add(40 * page) as *mut c_void,
+                page,
+                21, /* MADV_PAGEOUT */
+            );
+            bytes(size - 100, size).fill(9);
+            let mut map = PageMap::new(true);
+            map.clear(block.add(100), size - 200);
+            let mut map = PageMap::new(true);
+            if map.fd >= 0 {
+                // left out by the clearing (before the reads below, which map pages in)
+                assert!(map.untouched(block.add(300 * page) as usize));
+                assert!(!map.untouched(block.add(page) as usize));
+            }
+            assert!(bytes(0, 100).iter().all(|&b| b == 7));
+            assert!(bytes(100, size - 100).iter().all(|&b| b == 0));
+            assert!(bytes(size - 100, size).iter().all(|&b| b == 9));
+            free_large(block as *mut c_void, size);
+        }
+    }
+
+    /// Blocks not mapped by us are cleared whole.
+    #[test]
+    fn clearing_elsewhere_writes_every_byte() {
+        let mut v = vec![5u8; 3 * 4096 + 17];
+        let mut map = PageMap::new(false);
+        // SAFETY: within the vector.
+        unsafe { map.clear(v.as_mut_ptr().add(3), v.len() - 6) };
+        assert_eq!(&v[..3], &[5, 5, 5]);
+        assert!(v[3..v.len() - 3].iter().all(|&b| b == 0));
+        assert_eq!(&v[v.len() - 3..], &[5, 5, 5]);
     }
 }
