@@ -1,7 +1,9 @@
 // mjData handled every way a program may (tests/data_handles.rs): copies made and copied
 // into, a model copy used with the same data, a struct copied by value, data freed and made
-// again, resets. Prints a hash of the state after each, identical on both libraries, and of
-// the whole array buffer after resets (fresh data, pages written here and there, all of it).
+// again, resets. Prints a hash of the state after each, identical on both libraries, of the
+// whole array buffer after resets (fresh data, pages written here and there, all of it), and
+// whether copies of fresh, written and stepped data equal their source byte for byte.
+#include <mujoco/mjxmacro.h>
 #include <mujoco/mujoco.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -32,7 +34,45 @@ static void show_buffer(const char* what, const mjModel* m, mjData* d) {
          (unsigned long long)hash(14695981039346656037ull, d->buffer, d->nbuffer));
 }
 
+static void steps(const mjModel* m, mjData* d, int n);
+
+// mj_copyData copies every array (2.2.2 leaves the padding between them): whether each of
+// dst's arrays equals src's byte for byte after it, and a hash of dst's whole buffer when src
+// is fresh data (the same bytes on both libraries).
+static void show_copy(const char* what, const mjModel* m, mjData* dst, const mjData* src,
+                      int fresh) {
+  mj_copyData(dst, m, src);
+  int same = 1;
+  MJDATA_POINTERS_PREAMBLE(m)
+#define X(type, name, nr, nc) \
+  same &= !memcmp(dst->name, src->name, sizeof(type) * (m->nr) * (nc));
+  MJDATA_POINTERS
+#undef X
+  printf("%-28s nbuffer %8d copy %s", what, src->nbuffer, same ? "equal" : "DIFFERS");
+  if (fresh) {
+    uint64_t h = hash(14695981039346656037ull, dst->buffer, dst->nbuffer);
+    printf(" hash %016llx", (unsigned long long)h);
+  }
+  printf("\n");
+}
+
 static void buffer_resets(const mjModel* m) {
+  // copies: fresh data over data written all over, stepped data into fresh data, fresh into
+  // fresh
+  mjData* fresh = mj_makeData(m);
+  mjData* written = mj_makeData(m);
+  memset(written->buffer, 0x5a, written->nbuffer);
+  show_copy("fresh over written, copy", m, written, fresh, 1);
+  mjData* other = mj_makeData(m);
+  show_copy("fresh into fresh, copy", m, other, fresh, 1);
+  steps(m, fresh, 20);
+  show_copy("stepped into fresh, copy", m, other, fresh, 0);
+  memset(other->buffer, 0x5a, other->nbuffer);
+  show_copy("stepped over written, copy", m, other, fresh, 0);
+  mj_deleteData(other);
+  mj_deleteData(written);
+  mj_deleteData(fresh);
+
   mjData* d = mj_makeData(m);
   show_buffer("fresh, reset", m, d);
   // a page in three written, the last bytes spilling into the next page

@@ -1,8 +1,9 @@
 //! mjData handled every way a program may: copies made and copied into, a model copy used with
 //! the same data, a struct copied by value, data freed and made again, resets
 //! (capi-tests/data_handles.c). Both libraries must print the same state hashes, and the same
-//! hashes of the whole array buffer after resets: our C entry points reuse a view kept with
-//! each mjData, and none of these may leave it stale; our resets skip the pages never written.
+//! hashes of the whole array buffer after resets, and copies equal to their source byte for
+//! byte: our C entry points reuse a view kept with each mjData, and none of these may leave it
+//! stale; our resets and copies skip the pages never written.
 
 mod common;
 use common::*;
@@ -25,7 +26,8 @@ fn data_handles_like_the_reference() {
         text(&o.stdout)
     };
     let (reference, ours) = (out(Lib::Ref), out(Lib::Ours));
-    assert_eq!(reference.matches("hash").count(), 52, "{reference}");
+    assert_eq!(reference.matches("hash").count(), 60, "{reference}");
+    assert_eq!(reference.matches("copy equal").count(), 16, "{reference}");
     assert_eq!(
         reference, ours,
         "data handling differs:\nreference:\n{reference}\nours:\n{ours}"

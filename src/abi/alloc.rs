@@ -3,7 +3,7 @@
 
 use super::view::ViewSlot;
 use super::*;
-use crate::runtime::memory::{alloc_large, free, free_large, malloc, maps};
+use crate::runtime::memory::{alloc_large, copy_pages, free, free_large, malloc, maps};
 use std::os::raw::c_void;
 
 const ALIGN: usize = 64;
@@ -56,6 +56,20 @@ macro_rules! data_rows {
                 off += std::mem::size_of::<elem_ty!($t)>() * row_len!(m, $d1, $($d2)+);
             )*
             debug_assert_eq!(off, d.nbuffer as usize);
+        }
+        /// Copies every array of `src` into `dest` (not the padding between them, as 2.2.2),
+        /// the pages src never wrote left unread (`copy_pages`).
+        unsafe fn copy_data_arrays(m: &mjModel, dest: &mjData, src: &mjData) {
+            let (mut dst_map, mut src_map) = (ViewSlot::page_map(dest), ViewSlot::page_map(src));
+            $(
+                copy_pages(
+                    &mut dst_map,
+                    &mut src_map,
+                    dest.$name as *mut u8,
+                    src.$name as *const u8,
+                    std::mem::size_of::<elem_ty!($t)>() * row_len!(m, $d1, $($d2)+),
+                );
+            )*
         }
     };
 }
@@ -246,11 +260,7 @@ pub unsafe fn copy_data(
     (*dest).stack = stack;
     set_data_pointers(m, &mut *dest);
     ViewSlot::init(&*dest);
-    std::ptr::copy_nonoverlapping(
-        src.buffer as *const u8,
-        buffer as *mut u8,
-        src.nbuffer as usize,
-    );
+    copy_data_arrays(m, &*dest, src);
     Ok(dest)
 }
 

@@ -170,8 +170,7 @@ macro_rules! data_views {
                 // own slice, the gaps between them (no slice's) through the buffer pointer;
                 // all-zero bytes are a valid value of every element type (numbers, mjContact).
                 unsafe {
-                    let slot = &*ViewSlot::of(self.raw);
-                    let mut pages = PageMap::new(slot.owns(self.raw) && slot.mapped);
+                    let mut pages = ViewSlot::page_map(self.raw);
                     let buffer = self.raw.buffer as *mut u8;
                     let mut done = 0usize;
                     let gap = |pages: &mut PageMap, from: usize, to: usize| {
@@ -311,6 +310,15 @@ impl ViewSlot {
     /// As `init`.
     pub unsafe fn set_mapped(d: &mjData, mapped: bool) {
         (*Self::of(d)).mapped = mapped;
+    }
+
+    /// A page map for `d`'s buffer: the kernel's where the buffer is a mapping of `d`'s own.
+    ///
+    /// # Safety
+    /// As `init`.
+    pub(crate) unsafe fn page_map(d: &mjData) -> PageMap {
+        let slot = &*Self::of(d);
+        PageMap::new(slot.owns(d) && slot.mapped)
     }
 
     fn owns(&self, d: &mjData) -> bool {

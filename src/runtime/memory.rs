@@ -223,6 +223,60 @@ impl PageMap {
     }
 }
 
+/// Copies `len` bytes from `src` to `dst`, each with its own map (`src_map` of src's block,
+/// `dst_map` of dst's): a page that src never wrote is zeros, so it is not read, and is
+/// written only where dst's page holds data. Blocks that do not start at the same offset in a
+/// page are copied whole.
+///
+/// # Safety
+/// As `PageMap::clear` for each map and block; the ranges do not overlap.
+pub(crate) unsafe fn copy_pages(
+    dst_map: &mut PageMap,
+    src_map: &mut PageMap,
+    dst: *mut u8,
+    src: *const u8,
+    len: usize,
+) {
+    let shift = src_map.shift;
+    let page = 1usize << shift;
+    if src_map.fd < 0 || (dst as usize ^ src as usize) & (page - 1) != 0 {
+        return std::ptr::copy_nonoverlapping(src, dst, len);
+    }
+    // what to do with the bytes from `at` to the end of their page
+    #[derive(PartialEq, Clone, Copy)]
+    enum Act {
+        Skip,
+        Zero,
+        Copy,
+    }
+    let mut act = |at: usize| {
+        if !src_map.untouched(src as usize + at) {
+            Act::Copy
+        } else if dst_map.untouched(dst as usize + at) {
+            Act::Skip
+        } else {
+            Act::Zero
+        }
+    };
+    let next = |at: usize| {
+        ((((src as usize + at) >> shift) + 1) << shift).min(src as usize + len) - src as usize
+    };
+    let mut at = 0;
+    while at < len {
+        let what = act(at);
+        let mut stop = next(at);
+        while stop < len && act(stop) == what {
+            stop = next(stop);
+        }
+        match what {
+            Act::Skip => {}
+            Act::Zero => std::ptr::write_bytes(dst.add(at), 0, stop - at),
+            Act::Copy => std::ptr::copy_nonoverlapping(src.add(at), dst.add(at), stop - at),
+        }
+        at = stop;
+    }
+}
+
 impl Drop for PageMap {
     fn drop(&mut self) {
         if self.fd >= 0 {
