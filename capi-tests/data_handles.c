@@ -69,6 +69,7 @@ static void buffer_resets(const mjModel* m) {
   show_copy("stepped into fresh, copy", m, other, fresh, 0);
   memset(other->buffer, 0x5a, other->nbuffer);
   show_copy("stepped over written, copy", m, other, fresh, 0);
+  show_copy("onto itself, copy", m, other, other, 0);
   mj_deleteData(other);
   mj_deleteData(written);
   mj_deleteData(fresh);

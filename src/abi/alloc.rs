@@ -254,6 +254,10 @@ pub unsafe fn copy_data(
     if src.pstack != 0 {
         return Err("Attempting to copy mjData while stack is in use".into());
     }
+    if std::ptr::eq(dest, src) {
+        // a copy onto itself leaves it as it is
+        return Ok(dest);
+    }
     let (buffer, stack) = ((*dest).buffer, (*dest).stack);
     std::ptr::copy_nonoverlapping(src as *const mjData, dest, 1);
     (*dest).buffer = buffer;
