@@ -342,6 +342,23 @@ impl ViewSlot {
     }
 }
 
+impl<'a> Data<'a> {
+    /// The view kept with `d` for `m`, borrowed in place for reading: no copy and nothing
+    /// written, so calls that only read may share it; None where none is kept for `m` or it is
+    /// lent out (`with`). Its arena is that of the call that kept it: not for use.
+    ///
+    /// # Safety
+    /// As `new`; nothing writes `d` while the borrow lasts.
+    #[inline(always)]
+    pub unsafe fn kept(m: &mjModel, d: &'a mjData) -> Option<&'a Data<'a>> {
+        let slot = ViewSlot::of(d);
+        if (*slot).busy || !(*slot).holds(m, d) {
+            return None;
+        }
+        Some(&*(*slot).image.as_ptr())
+    }
+}
+
 impl Data<'_> {
     /// Runs `f` with this data and a scratch arena scope taken from its stack; everything `f`
     /// allocates is released afterwards (mjMARKSTACK / mjFREESTACK).

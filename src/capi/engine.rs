@@ -23,6 +23,23 @@ unsafe fn slice_mut<'a>(p: *mut f64, n: usize) -> &'a mut [f64] {
     }
 }
 
+/// The `n` values at `vec` that a call reads while writing the `len` values at `res`: in
+/// place, or a copy where the two overlap (their slices must not).
+unsafe fn input_apart<'a>(
+    vec: *const f64,
+    n: usize,
+    res: *const f64,
+    len: usize,
+) -> std::borrow::Cow<'a, [f64]> {
+    let v = slice(vec, n);
+    let (v0, r0) = (vec as usize, res as usize);
+    if v.is_empty() || len == 0 || v0 + 8 * n <= r0 || r0 + 8 * len <= v0 {
+        std::borrow::Cow::Borrowed(v)
+    } else {
+        std::borrow::Cow::Owned(v.to_vec())
+    }
+}
+
 /// Reports a NULL model through mju_error (2.2.2 would crash): true when `m` is NULL.
 fn null_model(name: &str, m: *const mjModel) -> bool {
     if m.is_null() {
@@ -711,7 +728,7 @@ pub unsafe extern "C" fn mj_mulM(
     guard("mj_mulM", (), || {
         let mv = Model::new(&*m);
         let nv = mv.raw.nv as usize;
-        let v: Vec<f64> = slice(vec, nv).to_vec();
+        let v = input_apart(vec, nv, res, nv);
         jacobian::mul_m(
             &mv,
             slice((*d).qM, mv.raw.nM as usize),
@@ -735,7 +752,7 @@ pub unsafe extern "C" fn mj_mulM2(
     guard("mj_mulM2", (), || {
         let mv = Model::new(&*m);
         let nv = mv.raw.nv as usize;
-        let v: Vec<f64> = slice(vec, nv).to_vec();
+        let v = input_apart(vec, nv, res, nv);
         let qld = slice((*d).qLD, mv.raw.nM as usize);
         let sqrt_inv = slice((*d).qLDiagSqrtInv, nv);
         jacobian::mul_m2(&mv, qld, sqrt_inv, slice_mut(res, nv), &v);
@@ -863,7 +880,7 @@ pub unsafe extern "C" fn mj_integratePos(
     guard("mj_integratePos", (), || {
         let mv = Model::new(&*m);
         let (nq, nv) = (mv.raw.nq as usize, mv.raw.nv as usize);
-        let v: Vec<f64> = slice(qvel, nv).to_vec();
+        let v = input_apart(qvel, nv, qpos, nq);
         integrate::integrate_pos(&mv, slice_mut(qpos, nq), &v, dt);
         Ok(())
     })
@@ -974,9 +991,12 @@ pub(super) unsafe fn run_const<R>(
     }
     guard(name, fallback, || {
         let mv = Model::new(&*m);
-        // the view is only read: nothing is written through the const pointer
-        let dv = Data::new(&*m, &mut *(d as *mut mjData));
-        f(&mv, &dv)
+        // the view is only read: nothing is written through the const pointer (but the view
+        // kept with the data, the first time)
+        match Data::kept(&*m, &*d) {
+            Some(dv) => f(&mv, dv),
+            None => f(&mv, &Data::new(&*m, &mut *(d as *mut mjData))),
+        }
     })
 }
 

@@ -159,14 +159,15 @@ pub fn mul_m(m: &Model, qm: &[f64], res: &mut [f64], vec: &[f64]) {
     }
     let (madr, simple, parent) = (m.dof_Madr(), m.dof_simplenum(), m.dof_parentid());
     let (res, vec) = (&mut res[..nv], &vec[..nv]);
-    res.fill(0.0);
+    // res[i] is first written at step i (only dofs after i add to it, their ancestors being
+    // before them): 2.2.2's cleared +0 is added in place of a load, and nothing is cleared
     for i in 0..nv {
         let adr = madr[i] as usize;
         let vi = vec[i];
         if simple[i] != 0 {
             res[i] = qm[adr] * vi;
         } else {
-            let ri = res[i] + qm[adr] * vi;
+            let ri = 0.0 + qm[adr] * vi;
             res[i] = by_parents(&qm[adr + 1..], parent[i], parent, vec, res, vi, ri);
         }
     }
@@ -179,7 +180,7 @@ fn mul_m_on_path(m: &Model, qm: &[f64], res: &mut [f64], vec: &[f64]) {
     let nv = m.raw.nv as usize;
     let (madr, simple, parent) = (m.dof_Madr(), m.dof_simplenum(), m.dof_parentid());
     let (res, vec) = (&mut res[..nv], &vec[..nv]);
-    res.fill(0.0);
+    // as in `mul_m`: res[i] is first written at step i
     let mut path = DofPath::new();
     for i in 0..nv {
         let adr = madr[i] as usize;
@@ -189,7 +190,7 @@ fn mul_m_on_path(m: &Model, qm: &[f64], res: &mut [f64], vec: &[f64]) {
             res[i] = qm[adr] * vi;
             continue;
         }
-        let mut ri = res[i] + qm[adr] * vi;
+        let mut ri = 0.0 + qm[adr] * vi;
         if let Some(a) = ancestors {
             for (&q, &j) in qm[adr + 1..adr + 1 + a.len()].iter().zip(a.iter().rev()) {
                 let ju = j as usize;

@@ -306,6 +306,7 @@ pub fn energy_vel(m: &Model, d: &mut Data) -> Result<(), EngineError> {
 
 /// Body, global position and orientation of an object with a spatial frame (body, xbody, geom,
 /// site, camera); None for other object types.
+#[inline(always)]
 pub fn object_frame(m: &Model, d: &Data, objtype: i32, id: usize) -> Option<(usize, Vec3, Mat3)> {
     use mjtObj_::*;
     let (pos, mat) = frame_arrays(d, objtype)?;
@@ -320,6 +321,7 @@ pub fn object_frame(m: &Model, d: &Data, objtype: i32, id: usize) -> Option<(usi
 
 /// Global positions (3 a row) and orientations (9 a row) of the objects of a type with a
 /// spatial frame (body: its inertial frame, xbody, geom, site, camera); None for other types.
+#[inline(always)]
 pub fn frame_arrays<'d>(d: &'d Data, objtype: i32) -> Option<(&'d [f64], &'d [f64])> {
     use mjtObj_::*;
     let t = |o: mjtObj_| o as i32;
@@ -335,6 +337,7 @@ pub fn frame_arrays<'d>(d: &'d Data, objtype: i32) -> Option<(&'d [f64], &'d [f6
 
 /// Body, position, com of its tree and optional rotation of an object for the spatial
 /// transforms of mj_objectVelocity / mj_objectAcceleration.
+#[inline(always)]
 fn motion_frame(
     m: &Model,
     d: &Data,
@@ -344,15 +347,19 @@ fn motion_frame(
     caller: &str,
 ) -> Result<(usize, Vec3, Vec3, Option<Mat3>), EngineError> {
     let Some((body, pos, mat)) = object_frame(m, d, objtype, id) else {
-        return Err(EngineError(format!(
-            "Invalid object type {objtype} in {caller}"
-        )));
+        return Err(invalid_type(objtype, caller));
     };
     let com = row(d.subtree_com, m.body_rootid()[body] as usize);
     Ok((body, pos, com, local.then_some(mat)))
 }
 
+#[cold]
+fn invalid_type(objtype: i32, caller: &str) -> EngineError {
+    EngineError(format!("Invalid object type {objtype} in {caller}"))
+}
+
 /// 6D velocity [rotation; translation] of an object, global or in its frame (mj_objectVelocity).
+#[inline(always)]
 pub fn object_velocity(
     m: &Model,
     d: &Data,
@@ -372,6 +379,7 @@ pub fn object_velocity(
 
 /// 6D acceleration of an object, with the centripetal term of the linear part; needs `cacc`
 /// from mj_rnePostConstraint (mj_objectAcceleration).
+#[inline(always)]
 pub fn object_acceleration(
     m: &Model,
     d: &Data,

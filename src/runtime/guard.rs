@@ -21,9 +21,13 @@ pub fn catch_explained<R>(
     explain: impl FnOnce(&(dyn std::any::Any + Send)) -> Option<String>,
 ) -> Result<R, String> {
     quiet_panics();
-    GUARDED.with(|g| g.set(g.get() + 1));
-    let result = std::panic::catch_unwind(std::panic::AssertUnwindSafe(f));
-    GUARDED.with(|g| g.set(g.get() - 1));
+    // one lookup of the thread's counter (each costs a call in a shared library)
+    let result = GUARDED.with(|g| {
+        g.set(g.get() + 1);
+        let result = std::panic::catch_unwind(std::panic::AssertUnwindSafe(f));
+        g.set(g.get() - 1);
+        result
+    });
     result.map_err(|p| {
         if let Some(msg) = explain(p.as_ref()) {
             return msg;
