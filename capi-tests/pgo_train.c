@@ -1,7 +1,8 @@
 // The workload rujoco's build profile is recorded on (cargo xtask pgo): for each model file
 // given, what programs do with a model, in proportions like theirs. Loads it (XML, then through
 // an MJB round trip), steps it with driven controls (full physics, then with constraints and
-// contacts disabled), and calls mj_forward, mj_inverse, site Jacobians, rays from each camera and
+// contacts disabled), and calls mj_forward, mj_inverse, site Jacobians, object velocities and
+// accelerations, contact forces, mj_mulM, mj_integratePos, rays from each camera and
 // mjv_updateScene. Prints nothing; a model the library rejects is skipped. One process per file:
 // the instrumented library writes its counts when the process exits.
 //   pgo_train STEPS FILE
@@ -35,6 +36,18 @@ static void queries(const mjModel* m, mjData* d, mjvScene* scn) {
   mjtNum* jacr = malloc(sizeof(mjtNum) * 3 * (m->nv ? m->nv : 1));
   for (int s = 0; s < m->nsite; s++) mj_jacSite(m, d, jacp, jacr, s);
   for (int b = 0; b < m->nbody; b++) mj_jacBodyCom(m, d, jacp, NULL, b);
+  // a controller's or reward's small queries
+  mjtNum v6[6];
+  for (int b = 0; b < m->nbody; b++) {
+    mj_objectVelocity(m, d, mjOBJ_BODY, b, v6, 0);
+    mj_objectAcceleration(m, d, mjOBJ_XBODY, b, v6, 1);
+  }
+  for (int c = 0; c < d->ncon; c++) mj_contactForce(m, d, c, v6);
+  for (int k = 0; k < 10; k++) mj_mulM(m, d, jacp, d->qvel);
+  mjtNum* q = malloc(sizeof(mjtNum) * (m->nq ? m->nq : 1));
+  memcpy(q, d->qpos, sizeof(mjtNum) * m->nq);
+  for (int k = 0; k < 10; k++) mj_integratePos(m, q, d->qvel, 0.001);
+  free(q);
   free(jacp);
   free(jacr);
   for (int c = 0; c < m->ncam; c++) {
