@@ -158,10 +158,8 @@ impl PageMap {
         // a map that shows the page of this value (just written) as untouched is not the
         // kernel's (an emulated /proc): then every page counts as touched
         let probe = std::hint::black_box(&map.entries) as *const _ as usize;
-        if map.fd >= 0 && map.untouched(probe) {
-            // SAFETY: our own descriptor, closed once.
-            unsafe { libc::close(map.fd) };
-            map.fd = -1;
+        if map.untouched(probe) {
+            map.give_up();
         }
         map
     }
@@ -186,10 +184,8 @@ impl PageMap {
             self.first = page;
             self.len = n.max(0) as usize / 8;
             if self.len == 0 {
-                // not readable after all: every page counts as touched from here on
-                // SAFETY: our own descriptor, closed once.
-                unsafe { libc::close(self.fd) };
-                self.fd = -1;
+                // not readable after all
+                self.give_up();
                 return false;
             }
         }
@@ -206,19 +202,26 @@ impl PageMap {
         if self.fd < 0 {
             return std::ptr::write_bytes(ptr, 0, len);
         }
-        let (mut at, end, shift) = (ptr as usize, ptr as usize + len, self.shift);
-        let next = |a: usize| (((a >> shift) + 1) << shift).min(end);
-        while at < end {
-            if self.untouched(at) {
-                at = next(at);
-                continue;
-            }
-            let mut stop = next(at);
-            while stop < end && !self.untouched(stop) {
-                stop = next(stop);
-            }
-            std::ptr::write_bytes(ptr.add(at - ptr as usize), 0, stop - at);
-            at = stop;
+        let shift = self.shift;
+        page_runs(
+            ptr as usize,
+            len,
+            shift,
+            |at| self.untouched(ptr as usize + at),
+            |untouched, from, to| {
+                if !untouched {
+                    std::ptr::write_bytes(ptr.add(from), 0, to - from);
+                }
+            },
+        );
+    }
+
+    /// Counts every page as touched from here on.
+    fn give_up(&mut self) {
+        if self.fd >= 0 {
+            // SAFETY: our own descriptor, closed once (then forgotten).
+            unsafe { libc::close(self.fd) };
+            self.fd = -1;
         }
     }
 }
@@ -243,13 +246,13 @@ pub(crate) unsafe fn copy_pages(
         return std::ptr::copy_nonoverlapping(src, dst, len);
     }
     // what to do with the bytes from `at` to the end of their page
-    #[derive(PartialEq, Clone, Copy)]
+    #[derive(PartialEq)]
     enum Act {
         Skip,
         Zero,
         Copy,
     }
-    let mut act = |at: usize| {
+    let act = |at: usize| {
         if !src_map.untouched(src as usize + at) {
             Act::Copy
         } else if dst_map.untouched(dst as usize + at) {
@@ -258,9 +261,24 @@ pub(crate) unsafe fn copy_pages(
             Act::Zero
         }
     };
-    let next = |at: usize| {
-        ((((src as usize + at) >> shift) + 1) << shift).min(src as usize + len) - src as usize
-    };
+    page_runs(src as usize, len, shift, act, |what, from, to| match what {
+        Act::Skip => {}
+        Act::Zero => std::ptr::write_bytes(dst.add(from), 0, to - from),
+        Act::Copy => std::ptr::copy_nonoverlapping(src.add(from), dst.add(from), to - from),
+    });
+}
+
+/// Walks the `len` bytes from address `base` a page at a time (pages of 2^`shift` bytes):
+/// `act` says what to do from an offset to the end of its page, and `apply` gets each run of
+/// pages with the same action as (action, from, to), offsets from `base`.
+fn page_runs<A: PartialEq>(
+    base: usize,
+    len: usize,
+    shift: u32,
+    mut act: impl FnMut(usize) -> A,
+    mut apply: impl FnMut(A, usize, usize),
+) {
+    let next = |at: usize| ((((base + at) >> shift) + 1) << shift).min(base + len) - base;
     let mut at = 0;
     while at < len {
         let what = act(at);
@@ -268,21 +286,14 @@ pub(crate) unsafe fn copy_pages(
         while stop < len && act(stop) == what {
             stop = next(stop);
         }
-        match what {
-            Act::Skip => {}
-            Act::Zero => std::ptr::write_bytes(dst.add(at), 0, stop - at),
-            Act::Copy => std::ptr::copy_nonoverlapping(src.add(at), dst.add(at), stop - at),
-        }
+        apply(what, at, stop);
         at = stop;
     }
 }
 
 impl Drop for PageMap {
     fn drop(&mut self) {
-        if self.fd >= 0 {
-            // SAFETY: our own descriptor, closed once.
-            unsafe { libc::close(self.fd) };
-        }
+        self.give_up();
     }
 }
 
