@@ -9,6 +9,7 @@ use super::{disabled, Data, EngineError, Model, MINVAL};
 use crate::abi::view::Arena;
 use crate::abi::*;
 use crate::math::blas::{add_scl, mul_mat_mat};
+use crate::math::misc::max;
 use mjtConstraint_::*;
 
 pub const FRICTIONLESS: i32 = mjCNSTR_CONTACT_FRICTIONLESS as i32;
@@ -193,7 +194,7 @@ pub fn friction_regularization(m: &Model, d: &mut Data) {
         let id = d.efc_id[i] as usize;
         let dim = d.contact[id].dim as usize;
         let friction = d.contact[id].friction;
-        d.efc_R[i + 1] = d.efc_R[i] / m.raw.opt.impratio.max(MINVAL);
+        d.efc_R[i + 1] = d.efc_R[i] / max(MINVAL, m.raw.opt.impratio);
         let mu = friction[0] * (d.efc_R[i + 1] / d.efc_R[i]).sqrt();
         d.contact[id].mu = mu;
         if kind == ELLIPTIC {

@@ -8,6 +8,7 @@ use super::support::reset_data;
 use super::{Data, EngineError, Model, MINVAL};
 use crate::abi::*;
 use crate::math::blas::norm;
+use crate::math::misc::max;
 
 /// What to do for one actuator.
 pub enum Plan {
@@ -59,7 +60,7 @@ pub fn drive(
     opt: &mjLROpt,
 ) -> Result<f64, EngineError> {
     let nv = m.raw.nv as usize;
-    let decay = (-m.raw.opt.timestep / opt.timeconst.max(0.01)).exp();
+    let decay = (-m.raw.opt.timestep / max(0.01, opt.timeconst)).exp();
     for v in &mut d.qvel[..nv] {
         *v *= decay;
     }
@@ -67,13 +68,13 @@ pub fn drive(
     let moment = &d.actuator_moment[i * nv..(i + 1) * nv];
     solve_ld(m, d.qfrc_applied, Some(moment), 1, d.qLD, d.qLDiagInv);
     let nrm = norm(&d.qfrc_applied[..nv]);
-    let scl = (2.0 * side as f64 - 1.0) * opt.accel / nrm.max(MINVAL);
+    let scl = (2.0 * side as f64 - 1.0) * opt.accel / max(MINVAL, nrm);
     for k in 0..nv {
         d.qfrc_applied[k] = d.actuator_moment[i * nv + k] * scl;
     }
     let nrm = norm(&d.qfrc_applied[..nv]);
     if opt.maxforce > 0.0 && nrm > opt.maxforce {
-        let scl = opt.maxforce / nrm.max(MINVAL);
+        let scl = opt.maxforce / max(MINVAL, nrm);
         for f in &mut d.qfrc_applied[..nv] {
             *f *= scl;
         }

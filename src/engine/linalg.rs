@@ -24,6 +24,13 @@ pub fn put<const N: usize>(dst: &mut [f64], i: usize, v: &[f64; N]) {
     dst[N * i..N * i + N].copy_from_slice(v);
 }
 
+/// Row `i` of a flat array of `N`-rows, in place (a copy whose parts were just stored and is
+/// read back whole stalls on store forwarding).
+#[inline]
+pub fn row_ref<const N: usize>(src: &[f64], i: usize) -> &[f64; N] {
+    src[N * i..N * i + N].try_into().expect("row of N")
+}
+
 /// Reads row `i` of a flat array of `N`-rows.
 #[inline]
 pub fn row<const N: usize>(src: &[f64], i: usize) -> [f64; N] {

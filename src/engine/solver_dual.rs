@@ -4,6 +4,7 @@
 
 use super::{Data, EngineError};
 use crate::math::blas::{dot, mul_mat_vec, sub};
+use crate::math::misc::max;
 use crate::math::qcqp::{qcqp, qcqp2, qcqp3};
 use crate::math::sparse::dot_sparse;
 use crate::math::MINVAL;
@@ -37,7 +38,7 @@ pub fn extract_block(
     if sub_r {
         for j in 0..n {
             ac[j * (n + 1)] -= d.efc_R[start + j];
-            ac[j * (n + 1)] = ac[j * (n + 1)].max(1e-10);
+            ac[j * (n + 1)] = max(1e-10, ac[j * (n + 1)]);
         }
     }
     Ok(())
@@ -103,7 +104,7 @@ fn friction_qcqp(v: &mut [f64; 6], ac: &[f64], bc: &[f64], mu: &[f64], fnormal: 
         for j in 0..n {
             s += v[j] * v[j] / (mu[j] * mu[j]);
         }
-        let s = (fnormal * fnormal / s.max(MINVAL)).sqrt();
+        let s = (fnormal * fnormal / max(MINVAL, s)).sqrt();
         for x in &mut v[..n] {
             *x *= s;
         }

@@ -9,6 +9,7 @@ use crate::engine::hooks;
 use crate::engine::linalg::row;
 use crate::engine::{Data, EngineError, Model};
 use crate::math::eig3::eig3;
+use crate::math::misc::{max, min};
 use crate::math::vec3::{dot3, sub3};
 use crate::math::Mat3;
 
@@ -113,8 +114,8 @@ fn body_aabb(m: &Model, d: &Data, b: usize, frame: &Mat3) -> [f64; 6] {
                 aabb[2 * j] = lo;
                 aabb[2 * j + 1] = hi;
             } else {
-                aabb[2 * j] = aabb[2 * j].min(lo);
-                aabb[2 * j + 1] = aabb[2 * j + 1].max(hi);
+                aabb[2 * j] = min(aabb[2 * j], lo);
+                aabb[2 * j + 1] = max(aabb[2 * j + 1], hi);
             }
         }
     }

@@ -8,6 +8,7 @@ use super::spheres::{beyond, Spheres};
 use super::{assign_margin, can_pair, clearly_beyond, collide_geoms, narrow, Contacts, Source};
 use crate::engine::linalg::row;
 use crate::engine::{Data, EngineError, Model};
+use crate::math::misc::max;
 use crate::math::vec3::sub3;
 
 /// Fewest geom pairs of a body pair worth this way (with fewer, the tests one by one are faster).
@@ -90,16 +91,19 @@ fn candidates(m: &Model, d: &Data, g1: usize, geoms2: std::ops::Range<usize>) ->
     let (types, rbound, margins) = (m.geom_type(), m.geom_rbound(), m.geom_margin());
     let (mask1, t1, r1) = ((contype[g1], conaffinity[g1]), types[g1], rbound[g1]);
     let (p1, margin1) = (row::<3>(d.geom_xpos, g1), margins[g1]);
+    // collide_geoms takes 2.2.2's max of the margins in type order: NaN where one is NaN in
+    // one of the orders, so a NaN margin on either side rules the test out
+    let nan1 = margin1.is_nan();
     let mut bits = 0;
     for g2 in geoms2.clone() {
         let paired = can_pair(mask1, (contype[g2], conaffinity[g2]));
         let collider = narrow::has_collider(t1, types[g2]);
         // spheres_apart (symmetric in the two geoms) where the squares decide it
         let r2 = rbound[g2];
-        let reach = r1 + r2 + assign_margin(m, margin1.max(margins[g2]));
+        let reach = r1 + r2 + assign_margin(m, max(margin1, margins[g2]));
         let dif = sub3(&p1, &row(d.geom_xpos, g2));
         let dist2 = dif[0] * dif[0] + dif[1] * dif[1] + dif[2] * dif[2];
-        let apart = (r1 > 0.0) & (r2 > 0.0) & clearly_beyond(dist2, reach);
+        let apart = (r1 > 0.0) & (r2 > 0.0) & !nan1 & clearly_beyond(dist2, reach);
         bits |= u64::from(paired & collider & !apart) << (g2 - geoms2.start);
     }
     bits

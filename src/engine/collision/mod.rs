@@ -3,7 +3,7 @@
 //! spheres with margin), the narrow-phase routine of the type pair finds contacts, and their
 //! parameters are mixed from the two geoms (or taken from the explicit pair).
 
-use crate::engine::linalg::row;
+use crate::engine::linalg::{row, row_ref};
 
 pub mod bounds;
 pub mod boxes;
@@ -20,6 +20,7 @@ use crate::abi::*;
 use crate::engine::hooks;
 use crate::engine::support::warning;
 use crate::engine::{disabled, enabled, Data, EngineError, Model};
+use crate::math::misc::{max, min};
 use crate::math::spatial::make_frame;
 use crate::math::*;
 use primitive::ContactGeom;
@@ -87,7 +88,7 @@ fn mixed(m: &Model, g1: usize, g2: usize) -> Params {
     } else {
         condim = m.geom_condim()[g1].max(m.geom_condim()[g2]);
         for i in 0..3 {
-            friction[2 * i] = m.geom_friction()[3 * g1 + i].max(m.geom_friction()[3 * g2 + i]);
+            friction[2 * i] = max(m.geom_friction()[3 * g1 + i], m.geom_friction()[3 * g2 + i]);
         }
         let (s1, s2) = (m.geom_solmix()[g1], m.geom_solmix()[g2]);
         let mix = if s1 >= MINVAL && s2 >= MINVAL {
@@ -107,7 +108,7 @@ fn mixed(m: &Model, g1: usize, g2: usize) -> Params {
             solref[i] = if r1[0] > 0.0 && r2[0] > 0.0 {
                 mix * r1[i] + (1.0 - mix) * r2[i]
             } else {
-                r1[i].min(r2[i])
+                min(r1[i], r2[i])
             };
         }
         for i in 0..mjNIMP {
@@ -224,7 +225,11 @@ fn bound(m: &Model, d: &Data, g: usize) -> bounds::Bound {
     bounds::Bound {
         pos: row(d.geom_xpos, g),
         mat: row(d.geom_xmat, g),
-        extent: bounds::extent(m.geom_type()[g], &row(m.geom_size(), g), m.geom_rbound()[g]),
+        extent: bounds::extent(
+            m.geom_type()[g],
+            row_ref(m.geom_size(), g),
+            m.geom_rbound()[g],
+        ),
         rbound: m.geom_rbound()[g],
     }
 }
@@ -240,7 +245,7 @@ pub(super) fn dynamic_pair_apart(m: &Model, d: &Data, g1: usize, g2: usize) -> b
     if !narrow::has_collider(m.geom_type()[g1], m.geom_type()[g2]) {
         return true;
     }
-    let margin = assign_margin(m, m.geom_margin()[g1].max(m.geom_margin()[g2]));
+    let margin = assign_margin(m, max(m.geom_margin()[g1], m.geom_margin()[g2]));
     spheres_apart(m, d, g1, g2, margin)
 }
 
@@ -276,8 +281,8 @@ pub(super) fn collide_geoms(
     };
     let (margin, gap) = match pair {
         None => (
-            m.geom_margin()[g1].max(m.geom_margin()[g2]),
-            m.geom_gap()[g1].max(m.geom_gap()[g2]),
+            max(m.geom_margin()[g1], m.geom_margin()[g2]),
+            max(m.geom_gap()[g1], m.geom_gap()[g2]),
         ),
         Some(p) => (m.pair_margin()[p], m.pair_gap()[p]),
     };
@@ -310,7 +315,7 @@ pub(super) fn collide_geoms(
         Some(p) => pair_params(m, p),
     };
     for f in &mut p.friction {
-        *f = f.max(MINMU);
+        *f = max(MINMU, *f);
     }
     if enabled(m, mjtEnableBit_::mjENBL_OVERRIDE) {
         p.solref = m.raw.opt.o_solref;

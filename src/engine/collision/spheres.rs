@@ -5,6 +5,7 @@
 use super::assign_margin;
 use crate::engine::linalg::row;
 use crate::engine::{Data, Model};
+use crate::math::misc::max;
 use crate::math::vec3::{dot3, sub3};
 use crate::math::Vec3;
 
@@ -63,7 +64,8 @@ pub(super) fn beyond(
     margin: f64,
     (c, radius, bmargin): (Vec3, f64, f64),
 ) -> bool {
-    let margin = assign_margin(m, margin.max(bmargin));
+    // (a NaN margin, which collide_geoms may take, makes no test: bmargin is finite)
+    let margin = assign_margin(m, max(bmargin, margin));
     let reach = r + radius + margin;
     let scale: f64 = p.iter().chain(&c).map(|x| x.abs()).sum();
     let bound = reach + SLACK * (r.abs() + radius + margin.abs() + scale);

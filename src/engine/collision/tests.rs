@@ -533,6 +533,8 @@ fn bounding_boxes_apart_only_without_contacts() {
     assert!(bounds::extent(CAPSULE, &[f64::NAN, 0.1, 0.0], 0.2).is_none());
     assert!(bounds::extent(MESH, &[0.0; 3], 0.0).is_none());
     assert!(bounds::extent(MESH, &mesh_aabb, mesh_rbound * 1.01).is_none());
+    assert!(bounds::extent(MESH, &mesh_aabb, f64::INFINITY).is_none());
+    assert!(bounds::extent(MESH, &mesh_aabb, f64::NAN).is_none());
     assert_eq!(
         bounds::extent(MESH, &mesh_aabb, mesh_rbound),
         Some(mesh_aabb)

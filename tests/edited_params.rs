@@ -1,0 +1,55 @@
+//! Contact parameters edited in mjModel after loading, NaN among them (capi-tests/
+//! edited_params.c): 2.2.2 mixes a pair's margin, gap, friction and solref with mju_max and
+//! mju_min, which pass a NaN on in one argument order only, and tests its bounding spheres
+//! with the margin that gives; our filters ahead of that test must let such pairs through.
+//! A NaN impratio likewise reaches the elliptic cones' R (mju_max(mjMINVAL, impratio)).
+//! Both libraries must print the same hashes of every contact and of the state.
+
+mod common;
+use common::*;
+
+#[test]
+fn edited_contact_parameters_like_the_reference() {
+    let src = [root().join("capi-tests/edited_params.c")];
+    let models = [
+        model("extra/contact_primitives.xml"),
+        // bodies of many geoms: the geom pairs of a body pair are tested together
+        model("extra/geom_clusters.xml"),
+        // elliptic cones (impratio), Newton and PGS
+        model("extra/contact_newton_elliptic_dense_ns5.xml"),
+        model("extra/contact_pgs_elliptic_sparse_ns5.xml"),
+    ];
+    let args: Vec<&str> = models.iter().map(String::as_str).collect();
+    let out = |lib| {
+        let prog = compile_c(&src, "edited_params", lib);
+        let o = run(&prog, &args, &[], 120);
+        assert!(o.status.success(), "{}{}", text(&o.stdout), text(&o.stderr));
+        text(&o.stdout)
+    };
+    let (reference, ours) = (out(Lib::Ref), out(Lib::Ours));
+    assert_eq!(reference.matches("hash").count(), 72, "{reference}");
+    // the edits change the runs: most hashes differ from the model as loaded
+    let loaded: Vec<&str> = reference
+        .lines()
+        .filter(|l| l.starts_with("as loaded"))
+        .map(|l| &l[l.len() - 16..])
+        .collect();
+    let changed = reference
+        .lines()
+        .filter(|l| l.contains("NaN") && !loaded.contains(&&l[l.len() - 16..]))
+        .count();
+    assert!(
+        changed >= 40,
+        "only {changed} edits changed the run:\n{reference}"
+    );
+    assert_eq!(
+        reference, ours,
+        "edited parameters differ:\nreference:\n{reference}\nours:\n{ours}"
+    );
+    report(
+        "edited-params",
+        &format!(
+            "edited contact parameters: identical contacts and states on both libraries\n{ours}"
+        ),
+    );
+}
