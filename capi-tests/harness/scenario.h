@@ -279,7 +279,8 @@ inline void check_differentiatePos(const mjModel* m, mjData*, const Inputs& in, 
   }
 }
 
-// mj_id2name for every named object type and id, mj_name2id back, and unknown names.
+// mj_id2name for every named object type and id, mj_name2id back, and names that share a start,
+// unknown and empty names.
 inline void check_names(const mjModel* m, mjData*, const Inputs&, Writer& w) {
   const int types[][2] = {
       {mjOBJ_BODY, m->nbody},       {mjOBJ_JOINT, m->njnt},        {mjOBJ_GEOM, m->ngeom},
@@ -293,9 +294,17 @@ inline void check_names(const mjModel* m, mjData*, const Inputs&, Writer& w) {
     for (int id = 0; id < t[1]; id++) {
       const char* name = mj_id2name(m, t[0], id);
       w.str("id2name#" + I(t[0], id), name);
-      if (name && name[0]) w.i1("name2id#" + I(t[0], id), mj_name2id(m, t[0], name));
+      if (name && name[0]) {
+        w.i1("name2id#" + I(t[0], id), mj_name2id(m, t[0], name));
+        // the name without its last character, and with one more: names that share a start
+        std::string s(name);
+        std::string prefix = s.substr(0, s.size() - 1);
+        w.i1("name2id(prefix)#" + I(t[0], id), mj_name2id(m, t[0], prefix.c_str()));
+        w.i1("name2id(longer)#" + I(t[0], id), mj_name2id(m, t[0], (s + "x").c_str()));
+      }
     }
     w.i1("name2id(unknown)#" + I(t[0]), mj_name2id(m, t[0], "no such name"));
+    w.i1("name2id(empty)#" + I(t[0]), mj_name2id(m, t[0], ""));
   }
 }
 

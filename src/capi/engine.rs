@@ -1087,8 +1087,8 @@ pub unsafe extern "C" fn mj_contactForce(
     result: *mut mjtNum,
 ) {
     run_const("mj_contactForce", (), m, d, |mv, dv| {
-        let f = support::contact_force(mv, dv, id);
-        slice_mut(result, 6).copy_from_slice(&f);
+        let res = slice_mut(result, 6).try_into().expect("6 values");
+        support::contact_force_to(mv, dv, id, res);
         Ok(())
     })
 }

@@ -192,19 +192,18 @@ fn name_table<'a>(m: &Model<'a>, objtype: i32) -> &'a [i32] {
     }
 }
 
-/// Bytes of the name starting at `adr`, without the terminating NUL.
-fn name_at<'a>(m: &Model<'a>, adr: usize) -> &'a [std::os::raw::c_char] {
-    let rest = &m.names()[adr.min(m.names().len())..];
-    let end = rest.iter().position(|&c| c == 0).unwrap_or(rest.len());
-    &rest[..end]
-}
-
 /// Id of the object of `objtype` named `name`, or -1 (mj_name2id).
 pub fn name2id(m: &Model, objtype: i32, name: &[u8]) -> i32 {
+    let names = m.names();
     for (i, &adr) in name_table(m, objtype).iter().enumerate() {
-        let n = name_at(m, adr as usize);
-        // strncmp over the rest of the names buffer: equal when both strings end together
-        if n.len() == name.len() && n.iter().zip(name).all(|(&a, &b)| a as u8 == b) {
+        let rest = &names[(adr as usize).min(names.len())..];
+        // strncmp over the rest of the names buffer, leaving at the first difference: equal
+        // when the name is followed by its end
+        let named = rest.get(..name.len()).is_some_and(|head| {
+            head.iter().zip(name).all(|(&a, &b)| a as u8 == b)
+                && rest.get(name.len()).is_none_or(|&c| c == 0)
+        });
+        if named {
             return i as i32;
         }
     }
@@ -401,19 +400,26 @@ pub fn object_acceleration(
 /// (mj_contactForce).
 pub fn contact_force(m: &Model, d: &Data, id: i32) -> Vec6 {
     let mut res = [0.0; 6];
+    contact_force_to(m, d, id, &mut res);
+    res
+}
+
+/// `contact_force` written into `res` (the C entry's result: no copy read back).
+#[inline]
+pub fn contact_force_to(m: &Model, d: &Data, id: i32, res: &mut [f64; 6]) {
+    *res = [0.0; 6];
     if id < 0 || id >= d.raw.ncon {
-        return res;
+        return;
     }
     let con = &d.contact[id as usize];
     if con.efc_address < 0 {
-        return res;
+        return;
     }
     let adr = con.efc_address as usize;
     let dim = con.dim.max(0) as usize;
     if m.raw.opt.cone == mjtCone_::mjCONE_PYRAMIDAL as i32 {
-        decode_pyramid(&mut res, &d.efc_force[adr..], &con.friction, dim);
+        decode_pyramid(res, &d.efc_force[adr..], &con.friction, dim);
     } else {
         res[..dim].copy_from_slice(&d.efc_force[adr..adr + dim]);
     }
-    res
 }
