@@ -2,8 +2,8 @@
 // given, what programs do with a model, in proportions like theirs. Loads it (XML, then through
 // an MJB round trip), steps it with driven controls (full physics, then with constraints and
 // contacts disabled), and calls mj_forward, mj_inverse, site Jacobians, object velocities and
-// accelerations, contact forces, mj_mulM, mj_integratePos, rays from each camera and
-// mjv_updateScene. Prints nothing; a model the library rejects is skipped. One process per file:
+// accelerations, contact forces, mj_mulM, mj_integratePos, a controller's quaternion and
+// vector math, rays from each camera and mjv_updateScene. Prints nothing; a model the library rejects is skipped. One process per file:
 // the instrumented library writes its counts when the process exits.
 //   pgo_train STEPS FILE
 #include <math.h>
@@ -29,7 +29,42 @@ static void drive(mjModel* m, mjData* d, int steps, int disable) {
   m->opt.disableflags = saved;
 }
 
+// A controller's own math on the poses (the mju_ functions): quaternions, rotations, small
+// vectors and matrices.
+static void math(const mjModel* m, const mjData* d) {
+  mjtNum q[4], r[9], v[3], w[3], mat[9], sum = 0;
+  for (int b = 0; b < m->nbody; b++) {
+    const mjtNum *xq = d->xquat + 4 * b, *xp = d->xpos + 3 * b, *xm = d->xmat + 9 * b;
+    mju_mulQuat(q, xq, xq);
+    mju_negQuat(r, q);
+    mju_subQuat(v, q, xq);
+    mju_quat2Mat(mat, q);
+    mju_mat2Quat(q, mat);
+    mju_rotVecQuat(v, xp, q);
+    mju_rotVecMat(w, v, xm);
+    mju_rotVecMatT(v, w, xm);
+    mju_mulMatVec(w, xm, v, 3, 3);
+    mju_mulMatTVec(v, xm, w, 3, 3);
+    mju_mulMatMat(r, xm, mat, 3, 3, 3);
+    mju_cross(w, v, xp);
+    mju_sub3(v, w, xp);
+    mju_add3(w, v, xp);
+    mju_scl3(v, w, 0.5);
+    sum += mju_dot3(v, w) + mju_norm3(v) + mju_dist3(v, xp) + mju_normalize3(w);
+    sum += mju_dot(xm, mat, 9) + mju_norm(xm, 9);
+    mju_copy4(q, xq);
+    mju_quatIntegrate(q, v, 0.001);
+    sum += mju_normalize4(q);
+    mju_axisAngle2Quat(q, w, 0.1);
+    mju_quat2Vel(v, q, 0.01);
+    mju_mulQuatAxis(q, xq, w);
+    mju_mulPose(v, q, xp, xq, w, q);
+  }
+  (void)sum;
+}
+
 static void queries(const mjModel* m, mjData* d, mjvScene* scn) {
+  math(m, d);
   mj_forward(m, d);
   mj_inverse(m, d);
   mjtNum* jacp = malloc(sizeof(mjtNum) * 3 * (m->nv ? m->nv : 1));

@@ -31,8 +31,10 @@ fn run<R>(name: &str, fallback: R, f: impl FnOnce() -> R) -> R {
     guard(name, fallback, || Ok(f()))
 }
 
+/// The N values at p, read one by one: callers often have just stored some of them singly, and
+/// one wide load over several such stores waits for them to reach the cache.
 unsafe fn rd<const N: usize>(p: *const mjtNum) -> [f64; N] {
-    std::ptr::read(p as *const [f64; N])
+    std::array::from_fn(|i| std::ptr::read_volatile(p.add(i)))
 }
 
 unsafe fn wr<const N: usize>(p: *mut mjtNum, v: [f64; N]) {
