@@ -3,7 +3,7 @@
 // an MJB round trip), steps it with driven controls (full physics, then with constraints and
 // contacts disabled), and calls mj_forward, mj_inverse, site Jacobians, object velocities and
 // accelerations, contact forces, mj_mulM, mj_integratePos, a controller's quaternion and
-// vector math, rays from each camera and mjv_updateScene. Prints nothing; a model the library rejects is skipped. One process per file:
+// vector math and other calls between steps, rays from each camera and mjv_updateScene. Prints nothing; a model the library rejects is skipped. One process per file:
 // the instrumented library writes its counts when the process exits.
 //   pgo_train STEPS FILE
 #include <math.h>
@@ -63,8 +63,65 @@ static void math(const mjModel* m, const mjData* d) {
   (void)sum;
 }
 
+// The rest of what controllers, planners and training loops call between steps: names, frames,
+// the mass matrix and its solves, Jacobian products, applied forces, position differences,
+// energies, copies of the data and finite-difference derivatives.
+static void api(const mjModel* m, mjData* d) {
+  int nv = m->nv ? m->nv : 1;
+  mjtNum* a = calloc(nv * nv, sizeof(mjtNum));
+  mjtNum* b = calloc(nv * 3, sizeof(mjtNum));
+  mjtNum *x = calloc(nv, sizeof(mjtNum)), *y = calloc(nv, sizeof(mjtNum));
+  mjtNum pos[3], mat[9], f[3] = {0.1, 0.2, 0.3};
+  mjtNum sum = mj_getTotalmass(m);
+  for (int t = mjOBJ_BODY; t <= mjOBJ_ACTUATOR; t++) {
+    for (int i = 0; i < 8; i++) {
+      const char* name = mj_id2name(m, t, i);
+      if (name) sum += mj_name2id(m, t, name);
+    }
+  }
+  for (int i = 1; i < m->nbody; i++) {
+    mj_local2Global(d, pos, mat, f, d->xquat + 4 * i, i, 0);
+    mj_applyFT(m, d, f, f, d->xipos + 3 * i, i, d->qfrc_applied);
+    mj_jacBody(m, d, b, NULL, i);
+    mj_jac(m, d, b, NULL, d->xipos + 3 * i, i);
+  }
+  for (int g = 0; g < m->ngeom && g < 20; g++) mj_jacGeom(m, d, b, NULL, g);
+  mj_fullM(m, a, d->qM);
+  for (int k = 0; k < 5; k++) {
+    mj_solveM(m, d, x, d->qfrc_bias, 1);
+    mj_solveM2(m, d, y, d->qfrc_bias, 1);
+    mj_differentiatePos(m, x, 0.01, d->qpos, d->qpos);
+    mj_subtreeVel(m, d);
+    mj_rnePostConstraint(m, d);
+    mj_rne(m, d, 1, y);
+    mj_energyPos(m, d);
+    mj_energyVel(m, d);
+  }
+  if (d->nefc) {
+    mjtNum* r = calloc(d->nefc, sizeof(mjtNum));
+    mj_mulJacVec(m, d, r, d->qvel);
+    mj_mulJacTVec(m, d, x, r);
+    free(r);
+  }
+  mjData* copy = mj_copyData(NULL, m, d);
+  mj_copyData(copy, m, d);
+  mj_deleteData(copy);
+  if (m->nv <= 60) {
+    mjtNum* A = calloc((2 * m->nv + m->na) * (2 * m->nv + m->na), sizeof(mjtNum));
+    mjd_transitionFD(m, d, 1e-6, 1, A, NULL, NULL, NULL);
+    free(A);
+  }
+  mju_zero(d->qfrc_applied, m->nv);
+  (void)sum;
+  free(a);
+  free(b);
+  free(x);
+  free(y);
+}
+
 static void queries(const mjModel* m, mjData* d, mjvScene* scn) {
   math(m, d);
+  api(m, d);
   mj_forward(m, d);
   mj_inverse(m, d);
   mjtNum* jacp = malloc(sizeof(mjtNum) * 3 * (m->nv ? m->nv : 1));

@@ -861,7 +861,10 @@ pub unsafe extern "C" fn mj_differentiatePos(
     guard("mj_differentiatePos", (), || {
         let mv = Model::new(&*m);
         let (nq, nv) = (mv.raw.nq as usize, mv.raw.nv as usize);
-        let (p1, p2): (Vec<f64>, Vec<f64>) = (slice(qpos1, nq).to_vec(), slice(qpos2, nq).to_vec());
+        let (p1, p2) = (
+            input_apart(qpos1, nq, qvel, nv),
+            input_apart(qpos2, nq, qvel, nv),
+        );
         integrate::differentiate_pos(&mv, slice_mut(qvel, nv), dt, &p1, &p2);
         Ok(())
     })
