@@ -335,8 +335,8 @@ inline void load_contacts(mjData* d, const Reader& r, const std::string& inst) {
 }
 
 // Post-solve quantities at the reference's forward results, contacts included:
-// mj_contactForce, mj_subtreeVel, mj_rnePostConstraint, and mj_objectVelocity /
-// mj_objectAcceleration of every object with a frame, global and local.
+// mj_contactForce, mj_subtreeVel, mj_rnePostConstraint, mj_objectVelocity /
+// mj_objectAcceleration of every object with a frame, global and local, and mj_local2Global.
 inline void check_objects(const mjModel* m, mjData* d, const Inputs& in, Writer& w) {
   const int types[][2] = {{mjOBJ_BODY, m->nbody}, {mjOBJ_XBODY, m->nbody}, {mjOBJ_GEOM, m->ngeom},
                           {mjOBJ_SITE, m->nsite}, {mjOBJ_CAMERA, m->ncam}};
@@ -366,6 +366,24 @@ inline void check_objects(const mjModel* m, mjData* d, const Inputs& in, Writer&
           mj_objectAcceleration(m, d, t[0], id, res, local);
           w.d("objectAcceleration#" + j, res, 6);
         }
+      }
+    }
+    // mj_local2Global of a point and orientation on each body, in each frame, with either
+    // output alone (the other left as it was)
+    const mjtNum pos[3] = {0.1, -0.2, 0.3}, quat[4] = {0.8, 0.2, -0.4, 0.4};
+    for (int b = 0; b < m->nbody; b++) {
+      for (int same = 0; same < 3; same++) {
+        mjtNum xp[3] = {7, 7, 7}, xm[9] = {7, 7, 7, 7, 7, 7, 7, 7, 7};
+        std::string j = I(k, b) + "." + I(same);
+        mj_local2Global(d, xp, xm, pos, quat, b, same);
+        w.d("local2Global.pos#" + j, xp, 3);
+        w.d("local2Global.mat#" + j, xm, 9);
+        mjtNum xp1[3] = {7, 7, 7}, xm1[9] = {7, 7, 7, 7, 7, 7, 7, 7, 7};
+        mj_local2Global(d, xp1, NULL, pos, quat, b, same);
+        mj_local2Global(d, NULL, xm1, pos, quat, b, same);
+        mj_local2Global(d, xp1 + 1, xm1 + 1, NULL, NULL, b, same);
+        w.d("local2Global.alone#" + j, xp1, 3);
+        w.d("local2Global.alone_mat#" + j, xm1, 9);
       }
     }
   }

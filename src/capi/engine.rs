@@ -914,30 +914,27 @@ pub unsafe extern "C" fn mj_local2Global(
     use crate::math::*;
     let b = body.max(0) as usize;
     let d = &*d;
-    let (p, r): (Vec3, Mat3) = match sameframe {
-        0 => {
-            let bx = arr3(d.xpos.add(3 * b));
-            let bm: Mat3 = arr(slice(d.xmat.add(9 * b), 9));
-            let bq: Quat = arr(slice(d.xquat.add(4 * b), 4));
-            let p = if pos.is_null() {
-                [0.0; 3]
-            } else {
-                add3(&mul_mat_vec3(&bm, &arr3(pos)), &bx)
-            };
-            let r = if quat.is_null() {
-                [0.0; 9]
-            } else {
-                quat2mat(&mul_quat(&bq, &arr(slice(quat, 4))))
-            };
-            (p, r)
-        }
-        1 => (arr3(d.xpos.add(3 * b)), arr(slice(d.xmat.add(9 * b), 9))),
-        _ => (arr3(d.xipos.add(3 * b)), arr(slice(d.ximat.add(9 * b), 9))),
-    };
+    // each output computed only when asked for, as 2.2.2 does
     if !xpos.is_null() && !pos.is_null() {
+        let p: Vec3 = match sameframe {
+            0 => {
+                let bm: Mat3 = arr(slice(d.xmat.add(9 * b), 9));
+                add3(&mul_mat_vec3(&bm, &arr3(pos)), &arr3(d.xpos.add(3 * b)))
+            }
+            1 => arr3(d.xpos.add(3 * b)),
+            _ => arr3(d.xipos.add(3 * b)),
+        };
         slice_mut(xpos, 3).copy_from_slice(&p);
     }
     if !xmat.is_null() && !quat.is_null() {
+        let r: Mat3 = match sameframe {
+            0 => {
+                let bq: Quat = arr(slice(d.xquat.add(4 * b), 4));
+                quat2mat(&mul_quat(&bq, &arr(slice(quat, 4))))
+            }
+            1 => arr(slice(d.xmat.add(9 * b), 9)),
+            _ => arr(slice(d.ximat.add(9 * b), 9)),
+        };
         slice_mut(xmat, 9).copy_from_slice(&r);
     }
 }
