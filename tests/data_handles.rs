@@ -10,7 +10,6 @@ use common::*;
 
 #[test]
 fn data_handles_like_the_reference() {
-    let src = [root().join("capi-tests/data_handles.c")];
     let models = [
         model("arm3.xml"),
         model("chain.xml"),
@@ -19,13 +18,7 @@ fn data_handles_like_the_reference() {
         model("extra/longchain_newton.xml"),
     ];
     let args: Vec<&str> = models.iter().map(String::as_str).collect();
-    let out = |lib| {
-        let prog = compile_c(&src, "data_handles", lib);
-        let o = run(&prog, &args, &[], 120);
-        assert!(o.status.success(), "{}{}", text(&o.stdout), text(&o.stderr));
-        text(&o.stdout)
-    };
-    let (reference, ours) = (out(Lib::Ref), out(Lib::Ours));
+    let (reference, ours) = both_outputs("data_handles", &args);
     assert_eq!(reference.matches("hash").count(), 60, "{reference}");
     assert_eq!(reference.matches("copy equal").count(), 20, "{reference}");
     assert_eq!(

@@ -10,7 +10,6 @@ use common::*;
 
 #[test]
 fn edited_contact_parameters_like_the_reference() {
-    let src = [root().join("capi-tests/edited_params.c")];
     let models = [
         model("extra/contact_primitives.xml"),
         // bodies of many geoms: the geom pairs of a body pair are tested together
@@ -20,13 +19,7 @@ fn edited_contact_parameters_like_the_reference() {
         model("extra/contact_pgs_elliptic_sparse_ns5.xml"),
     ];
     let args: Vec<&str> = models.iter().map(String::as_str).collect();
-    let out = |lib| {
-        let prog = compile_c(&src, "edited_params", lib);
-        let o = run(&prog, &args, &[], 120);
-        assert!(o.status.success(), "{}{}", text(&o.stdout), text(&o.stderr));
-        text(&o.stdout)
-    };
-    let (reference, ours) = (out(Lib::Ref), out(Lib::Ours));
+    let (reference, ours) = both_outputs("edited_params", &args);
     assert_eq!(reference.matches("hash").count(), 72, "{reference}");
     // the edits change the runs: most hashes differ from the model as loaded
     let loaded: Vec<&str> = reference

@@ -10,15 +10,7 @@ use common::*;
 /// Output of capi-tests/NAME.c run on `scene` (under models/), built against the reference
 /// and against ours.
 fn both(name: &str, scene: &str) -> (String, String) {
-    let src = [root().join(format!("capi-tests/{name}.c"))];
-    let scene = model(scene);
-    let out = |lib| {
-        let prog = compile_c(&src, name, lib);
-        let o = run(&prog, &[&scene], &[], 120);
-        assert!(o.status.success(), "{}{}", text(&o.stdout), text(&o.stderr));
-        text(&o.stdout)
-    };
-    (out(Lib::Ref), out(Lib::Ours))
+    both_outputs(name, &[&model(scene)])
 }
 
 #[test]

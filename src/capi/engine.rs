@@ -911,30 +911,25 @@ pub unsafe extern "C" fn mj_local2Global(
     body: c_int,
     sameframe: mjtByte,
 ) {
-    use crate::math::*;
     let b = body.max(0) as usize;
     let d = &*d;
+    // the rows up to body b
+    let rows = |p: *const f64, n: usize| slice(p, n * (b + 1));
+    let frames = support::BodyFrames {
+        xpos: rows(d.xpos, 3),
+        xmat: rows(d.xmat, 9),
+        xquat: rows(d.xquat, 4),
+        xipos: rows(d.xipos, 3),
+        ximat: rows(d.ximat, 9),
+    };
     // each output computed only when asked for, as 2.2.2 does
     if !xpos.is_null() && !pos.is_null() {
-        let p: Vec3 = match sameframe {
-            0 => {
-                let bm: Mat3 = arr(slice(d.xmat.add(9 * b), 9));
-                add3(&mul_mat_vec3(&bm, &arr3(pos)), &arr3(d.xpos.add(3 * b)))
-            }
-            1 => arr3(d.xpos.add(3 * b)),
-            _ => arr3(d.xipos.add(3 * b)),
-        };
+        let p = support::local_pos_to_global(&frames, &arr3(pos), b, sameframe);
         slice_mut(xpos, 3).copy_from_slice(&p);
     }
     if !xmat.is_null() && !quat.is_null() {
-        let r: Mat3 = match sameframe {
-            0 => {
-                let bq: Quat = arr(slice(d.xquat.add(4 * b), 4));
-                quat2mat(&mul_quat(&bq, &arr(slice(quat, 4))))
-            }
-            1 => arr(slice(d.xmat.add(9 * b), 9)),
-            _ => arr(slice(d.ximat.add(9 * b), 9)),
-        };
+        let q = crate::math::arr(slice(quat, 4));
+        let r = support::local_quat_to_global(&frames, &q, b, sameframe);
         slice_mut(xmat, 9).copy_from_slice(&r);
     }
 }

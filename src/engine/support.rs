@@ -8,8 +8,55 @@ use crate::abi::*;
 use crate::math::misc::decode_pyramid;
 use crate::math::*;
 
-/// Global pose of a frame given relative to `body` (mj_local2Global); `sameframe` 1 copies
-/// the body frame, 2 the inertial frame.
+/// The arrays a body's frames are read from (rows of 3, 9 and 4 a body), up to some body.
+pub(crate) struct BodyFrames<'a> {
+    pub xpos: &'a [f64],
+    pub xmat: &'a [f64],
+    pub xquat: &'a [f64],
+    pub xipos: &'a [f64],
+    pub ximat: &'a [f64],
+}
+
+impl<'a> BodyFrames<'a> {
+    pub fn of(d: &'a Data) -> Self {
+        BodyFrames {
+            xpos: d.xpos,
+            xmat: d.xmat,
+            xquat: d.xquat,
+            xipos: d.xipos,
+            ximat: d.ximat,
+        }
+    }
+}
+
+/// Global position of a point given relative to `body` (mj_local2Global); `sameframe` 1 takes
+/// the body frame's origin, 2 the inertial frame's.
+#[inline(always)]
+pub(crate) fn local_pos_to_global(f: &BodyFrames, pos: &Vec3, body: usize, sameframe: u8) -> Vec3 {
+    match sameframe {
+        0 => add3(&mul_mat_vec3(&row(f.xmat, body), pos), &row(f.xpos, body)),
+        1 => row(f.xpos, body),
+        _ => row(f.xipos, body),
+    }
+}
+
+/// Global orientation of a frame given relative to `body` (mj_local2Global); `sameframe` 1
+/// takes the body frame's, 2 the inertial frame's.
+#[inline(always)]
+pub(crate) fn local_quat_to_global(
+    f: &BodyFrames,
+    quat: &Quat,
+    body: usize,
+    sameframe: u8,
+) -> Mat3 {
+    match sameframe {
+        0 => quat2mat(&mul_quat(&row(f.xquat, body), quat)),
+        1 => row(f.xmat, body),
+        _ => row(f.ximat, body),
+    }
+}
+
+/// Global pose of a frame given relative to `body`: both of the above.
 #[inline(always)]
 pub fn local_to_global(
     d: &Data,
@@ -18,15 +65,11 @@ pub fn local_to_global(
     body: usize,
     sameframe: u8,
 ) -> (Vec3, Mat3) {
-    match sameframe {
-        0 => {
-            let p = add3(&mul_mat_vec3(&row(d.xmat, body), pos), &row(d.xpos, body));
-            let q = mul_quat(&row(d.xquat, body), quat);
-            (p, quat2mat(&q))
-        }
-        1 => (row(d.xpos, body), row(d.xmat, body)),
-        _ => (row(d.xipos, body), row(d.ximat, body)),
-    }
+    let f = BodyFrames::of(d);
+    (
+        local_pos_to_global(&f, pos, body, sameframe),
+        local_quat_to_global(&f, quat, body, sameframe),
+    )
 }
 
 /// Counts a warning; reports it through mju_warning the first time (mj_warning).

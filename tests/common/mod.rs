@@ -255,6 +255,19 @@ pub fn run(prog: &Path, args: &[&str], envs: &[(&str, &str)], seconds: u32) -> O
         .unwrap_or_else(|e| panic!("cannot run {}: {e}", prog.display()))
 }
 
+/// Output of capi-tests/NAME.c run with `args`, built against the reference and against ours
+/// (each run must succeed within two minutes).
+pub fn both_outputs(name: &str, args: &[&str]) -> (String, String) {
+    let src = [root().join(format!("capi-tests/{name}.c"))];
+    let out = |lib| {
+        let prog = compile_c(&src, name, lib);
+        let o = run(&prog, args, &[], 120);
+        assert!(o.status.success(), "{}{}", text(&o.stdout), text(&o.stderr));
+        text(&o.stdout)
+    };
+    (out(Lib::Ref), out(Lib::Ours))
+}
+
 pub fn text(b: &[u8]) -> String {
     String::from_utf8_lossy(b).into_owned()
 }
