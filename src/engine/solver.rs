@@ -12,10 +12,11 @@ use crate::abi::*;
 use crate::math::blas::{add_to_scl, dot, mul_mat_vec, norm, scl, sqr_mat_td_lower, sub_from};
 use crate::math::chol::{chol_factor, chol_solve, chol_update, chol_update2};
 use crate::math::chol_sparse::{
-    chol_factor_sparse, chol_solve_sparse, chol_sparse_counts, chol_update_sparse,
+    chol_factor_sparse, chol_factor_sparse_preset, chol_solve_sparse, chol_sparse_pattern,
+    chol_sparse_values, chol_update_sparse,
 };
 use crate::math::sparse::{
-    compress_sparse, dot_sparse, mul_mat_vec_sparse, sqr_mat_td_sparse_pattern,
+    add_td_row, compress_sparse, dot_sparse, mul_mat_vec_sparse, sqr_mat_td_sparse_pattern,
     sqr_mat_td_sparse_values, SparseRef,
 };
 use mjtConstraintState_::*;
@@ -391,6 +392,8 @@ struct Ctx<'b> {
     h: &'b mut [f64],
     hcone: &'b mut [f64],
     sparse: bool,
+    /// Where the factor's rows start in h and colind, and their total length.
+    first: usize,
     nnz: usize,
     rownnz: &'b mut [i32],
     rowadr: &'b mut [i32],
@@ -731,17 +734,31 @@ fn hessian_direct(m: &Model, d: &mut Data, a: &mut Arena, c: &mut Ctx) -> Result
                 colind: d.efc_JT_colind,
                 rowsuper: Some(d.efc_JT_rowsuper),
             };
-            a.scope(|a| -> Result<(), EngineError> {
+            let preset = a.scope(|a| -> Result<bool, EngineError> {
                 let chain = a.alloc_int_stale(2 * nv)?;
                 let buf = a.alloc_stale(nv)?;
                 let (rownnz, rowadr, colind) = (&mut *c.rownnz, &mut *c.rowadr, &mut *c.colind);
-                let packed = nv >= PACKED_NV;
-                let staged = sqr_mat_td_sparse_pattern(
-                    nv, rownnz, rowadr, colind, &pat, &pat_t, chain, packed,
-                );
-                if packed {
-                    place_hessian_rows(m, staged, rownnz, rowadr, colind);
+                sqr_mat_td_sparse_pattern(nv, rownnz, rowadr, colind, &pat, &pat_t, chain, true);
+                let (parent, simple) = (m.dof_parentid(), m.dof_simplenum());
+                if chol_sparse_pattern(nv, rownnz, rowadr, colind, parent, simple).is_some() {
+                    // H = J'*D*J + M row by row, into the factor's pattern
+                    let (qm, madr) = (&*d.qM, m.dof_Madr());
+                    chol_sparse_values(c.h, nv, rownnz, rowadr, colind, buf, |r, buf| {
+                        add_td_row(buf, r, d.efc_J, d.efc_JT, Some(hdiag), &pat, &pat_t);
+                        let (mut j, mut adr) = (r as i32, madr[r] as usize);
+                        while j >= 0 {
+                            buf[j as usize] += qm[adr];
+                            if simple[r] != 0 {
+                                break;
+                            }
+                            j = parent[j as usize];
+                            adr += 1;
+                        }
+                    });
+                    return Ok(true);
                 }
+                // rows nv apart, filled in by the merges of adding M and factorizing
+                sqr_mat_td_sparse_pattern(nv, rownnz, rowadr, colind, &pat, &pat_t, chain, false);
                 sqr_mat_td_sparse_values(
                     c.h,
                     d.efc_J,
@@ -755,27 +772,39 @@ fn hessian_direct(m: &Model, d: &mut Data, a: &mut Arena, c: &mut Ctx) -> Result
                     &pat_t,
                     buf,
                 );
-                Ok(())
+                Ok(false)
             })?;
-            add_m_sparse_with(m, d.qM, a, c.h, c.rownnz, c.rowadr, c.colind, false)?;
-            let rank = a.scope(|a| -> Result<usize, EngineError> {
-                let buf_ind = a.alloc_int_stale(nv)?;
-                let buf = a.alloc_stale(nv)?;
-                chol_factor_sparse(c.h, nv, MINVAL, c.rownnz, c.rowadr, c.colind, buf, buf_ind)
-                    .map_err(|e| EngineError(e.into()))
-            })?;
+            let rank = if preset {
+                // the scratch 2.2.2 takes to add M (unless every dof is simple) and to factorize
+                if m.dof_simplenum()[..nv].contains(&0) {
+                    a.account(2 * nv * nv + 4 * nv)?;
+                }
+                a.account(2 * nv)?;
+                chol_factor_sparse_preset(c.h, nv, MINVAL, c.rownnz, c.rowadr, c.colind)
+                    .map_err(|e| EngineError(e.into()))?
+            } else {
+                add_m_sparse_with(m, d.qM, a, c.h, c.rownnz, c.rowadr, c.colind, false)?;
+                let rank = a.scope(|a| -> Result<usize, EngineError> {
+                    let buf_ind = a.alloc_int_stale(nv)?;
+                    let buf = a.alloc_stale(nv)?;
+                    chol_factor_sparse(c.h, nv, MINVAL, c.rownnz, c.rowadr, c.colind, buf, buf_ind)
+                        .map_err(|e| EngineError(e.into()))
+                })?;
+                compress_sparse(c.h, nv, c.rownnz, c.rowadr, c.colind);
+                rank
+            };
+            c.first = c.rowadr[0] as usize;
             if rank != nv {
                 return Err(EngineError(
                     "Rank-defficient Hessian in HessianDirect".into(),
                 ));
             }
-            compress_sparse(c.h, nv, c.rownnz, c.rowadr, c.colind);
             c.nnz = c.rownnz[..nv].iter().sum::<i32>() as usize;
         } else {
             sqr_mat_td_lower(c.h, d.efc_J, Some(hdiag), nefc, nv);
             add_m_dense(m, d.qM, c.h, false);
             chol_factor(c.h, nv, MINVAL);
-            c.nnz = nv * nv;
+            (c.first, c.nnz) = (0, nv * nv);
         }
         Ok(())
     })?;
@@ -786,60 +815,13 @@ fn hessian_direct(m: &Model, d: &mut Data, a: &mut Arena, c: &mut Ctx) -> Result
     Ok(())
 }
 
-/// Smallest nv whose sparse Hessian rows are packed (`place_hessian_rows`): below it the
-/// nv x nv layout stays in the L2 cache and counting costs more than it saves.
-const PACKED_NV: usize = 256;
-
-/// Gives each row of the sparse Hessian, whose J'DJ pattern is packed at the front of
-/// `colind`, room for what adding M and the factorization put in it, the rows one after
-/// another (a factorization in the same order as with rows nv apart, 2.2.2's layout, touching
-/// far less memory); rows nv apart where the counting does not fit in `colind`.
-fn place_hessian_rows(
-    m: &Model,
-    staged: usize,
-    rownnz: &[i32],
-    rowadr: &mut [i32],
-    colind: &mut [i32],
-) {
-    let nv = m.raw.nv as usize;
-    let (pattern, rest) = colind.split_at_mut(staged);
-    let counted = rest.len().checked_sub(nv).and_then(|len| {
-        let (work, count) = rest.split_at_mut(len);
-        chol_sparse_counts(
-            nv,
-            rownnz,
-            rowadr,
-            pattern,
-            m.dof_parentid(),
-            m.dof_simplenum(),
-            count,
-            work,
-        )
-    });
-    let count_at = colind.len() - nv;
-    let (mut src_end, mut dst_end) = (staged, counted.unwrap_or(0));
-    for r in (0..nv).rev() {
-        let n = rownnz[r] as usize;
-        let src = src_end - n;
-        let dst = match counted {
-            Some(_) => {
-                dst_end -= colind[count_at + r] as usize;
-                dst_end
-            }
-            None => r * nv,
-        };
-        colind.copy_within(src..src + n, dst);
-        rowadr[r] = dst as i32;
-        src_end = src;
-    }
-}
-
 /// Hcone = H plus the cone Hessians of contacts in the cone state, as rank-one updates of the
 /// factor by the rows of L'J (L: Cholesky factor of the contact's H).
 fn hessian_cone(m: &Model, d: &mut Data, a: &mut Arena, c: &mut Ctx) -> Result<(), EngineError> {
     let nv = m.raw.nv as usize;
     let nefc = d.raw.nefc as usize;
-    c.hcone[..c.nnz].copy_from_slice(&c.h[..c.nnz]);
+    let rows = c.first..c.first + c.nnz;
+    c.hcone[rows.clone()].copy_from_slice(&c.h[rows]);
     a.scope(|a| -> Result<(), EngineError> {
         let ltj = a.alloc(6 * nv)?;
         let row = a.alloc(nv)?;
@@ -1049,6 +1031,7 @@ fn cg_newton(
         h: a.alloc_stale(hn)?,
         hcone: a.alloc_stale(hn)?,
         sparse: is_sparse(m),
+        first: 0,
         nnz: 0,
         rownnz: a.alloc_int_stale(if newton { nv } else { 0 })?,
         rowadr: a.alloc_int_stale(if newton { nv } else { 0 })?,

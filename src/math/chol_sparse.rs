@@ -84,81 +84,201 @@ pub fn chol_factor_sparse(
     Ok(rank)
 }
 
-/// Sizes of the rows of `chol_factor_sparse`'s factor, from the pattern alone: row r holds
-/// its own (rownnz, rowadr, colind: lower triangle, any order), its diagonal, r's ancestors in
-/// `parent` where `simple[r]` is 0 (the mass matrix's pattern), and the fill-in, which the
-/// factorization takes from every row whose pattern holds r. Sizes go to `count`; `work`
-/// takes 4n ints and the rows' patterns. Returns their total, or None when `work` is too
-/// small.
-#[allow(clippy::too_many_arguments)]
-pub fn chol_sparse_counts(
+/// Lays out the pattern of `chol_factor_sparse`'s factor of H = J'*D*J + M ahead of the
+/// values. In: the rows of J'*D*J's pattern (rownnz, rowadr, colind: lower triangle,
+/// ascending, packed at the front of colind). Out: the factor's rows, ascending, one after
+/// another at the end of colind (less 4n ints of scratch): row r holds its J'*D*J columns,
+/// stored as `!col` (marked, see `chol_sparse_values`), M's (its diagonal, and r's ancestors
+/// in `parent` where `simple[r]` is 0) and the fill-in of the factorization, which row r takes
+/// from its children in the elimination tree (the rows whose largest index below the diagonal
+/// is r). Returns the address of row 0, or None when the rows do not fit beside the input.
+pub fn chol_sparse_pattern(
     n: usize,
-    rownnz: &[i32],
-    rowadr: &[i32],
-    colind: &[i32],
+    rownnz: &mut [i32],
+    rowadr: &mut [i32],
+    colind: &mut [i32],
     parent: &[i32],
     simple: &[i32],
-    count: &mut [i32],
-    work: &mut [i32],
 ) -> Option<usize> {
-    let len = work.len().checked_sub(4 * n)?;
-    let (lists, rest) = work.split_at_mut(len);
-    let (mark, rest) = rest.split_at_mut(n);
-    let (head, rest) = rest.split_at_mut(n);
-    let (next, start) = rest.split_at_mut(n);
-    mark.fill(-1);
+    let len = colind.len().checked_sub(4 * n)?;
+    let (rows, work) = colind.split_at_mut(len);
+    let (head, work) = work.split_at_mut(n);
+    let (next, work) = work.split_at_mut(n);
+    let (mut a, mut b) = work.split_at_mut(n);
     head.fill(-1);
-    // each row's pattern goes (unordered) below the one before, from the end of `lists`; the
-    // fill of row r comes from its children in the elimination tree (the rows whose largest
-    // index below the diagonal is r), whose patterns are read once, there
+    let col = |v: i32| if v < 0 { !v } else { v };
     let mut top = len;
     for r in (0..n).rev() {
         let ri = r as i32;
-        let end = top;
-        let mut up = -1;
-        let mut add = |j: i32, lists: &mut [i32], top: &mut usize| -> Option<()> {
-            if mark[u(j)] != ri {
-                mark[u(j)] = ri;
-                *top = top.checked_sub(1)?;
-                lists[*top] = j;
-                if j < ri && j > up {
-                    up = j;
-                }
+        // M's columns, ascending, in b
+        let mut nm = 0;
+        let mut j = ri;
+        while j >= 0 {
+            b[nm] = j;
+            nm += 1;
+            if simple[r] != 0 {
+                break;
             }
-            Some(())
-        };
-        add(ri, lists, &mut top)?;
-        let a = u(rowadr[r]);
-        for &j in &colind[a..a + u(rownnz[r])] {
-            add(j, lists, &mut top)?;
+            j = parent[u(j)];
         }
-        if simple[r] == 0 {
-            let mut j = parent[r];
-            while j >= 0 {
-                add(j, lists, &mut top)?;
-                j = parent[u(j)];
-            }
+        b[..nm].reverse();
+        // with J'*D*J's (marked) in a
+        let (start, end) = (u(rowadr[r]), u(rowadr[r]) + u(rownnz[r]));
+        if end > len {
+            return None;
         }
-        let mut c = head[r];
-        while c >= 0 {
-            let cu = u(c);
-            let s = u(start[cu]);
-            for k in s..s + u(count[cu]) {
-                let j = lists[k];
-                if j != c {
-                    add(j, lists, &mut top)?;
-                }
-            }
-            c = next[cu];
+        let own = &rows[start..end];
+        let mut na = merge_marked(own, &b[..nm], a, true);
+        // and each child's, less its diagonal
+        let mut ch = head[r];
+        while ch >= 0 {
+            let cu = u(ch);
+            let at = u(rowadr[cu]);
+            let theirs = &rows[at..at + u(rownnz[cu]) - 1];
+            na = merge_marked(&a[..na], theirs, b, false);
+            std::mem::swap(&mut a, &mut b);
+            ch = next[cu];
         }
-        count[r] = (end - top) as i32;
-        start[r] = top as i32;
-        if up >= 0 {
-            next[r] = head[u(up)];
-            head[u(up)] = ri;
+        // rows below r still hold their input below row r's
+        if top < start + na {
+            return None;
+        }
+        top -= na;
+        rows[top..top + na].copy_from_slice(&a[..na]);
+        rowadr[r] = top as i32;
+        rownnz[r] = na as i32;
+        if na >= 2 {
+            let up = u(col(a[na - 2]));
+            next[r] = head[up];
+            head[up] = ri;
         }
     }
-    Some(len - top)
+    Some(top)
+}
+
+/// Merges two ascending column lists into `out` (duplicates once) and returns its length.
+/// `x` may hold marked columns (`!col`), which stay marked; with `mark_y` the columns of y
+/// are marked (J'*D*J's own), else y's marks are dropped (a child's).
+fn merge_marked(x: &[i32], y: &[i32], out: &mut [i32], mark_y: bool) -> usize {
+    let col = |v: i32| if v < 0 { !v } else { v };
+    let yv = |v: i32| if mark_y { !col(v) } else { col(v) };
+    let (mut i, mut k, mut nout) = (0, 0, 0);
+    while i < x.len() && k < y.len() {
+        let (cx, cy) = (col(x[i]), col(y[k]));
+        out[nout] = if cx < cy {
+            i += 1;
+            x[i - 1]
+        } else if cy < cx {
+            k += 1;
+            yv(y[k - 1])
+        } else {
+            i += 1;
+            k += 1;
+            if mark_y {
+                !cx
+            } else {
+                x[i - 1]
+            }
+        };
+        nout += 1;
+    }
+    for &v in &x[i..] {
+        out[nout] = v;
+        nout += 1;
+    }
+    for &v in &y[k..] {
+        out[nout] = yv(v);
+        nout += 1;
+    }
+    nout
+}
+
+/// Values of the rows `chol_sparse_pattern` laid out: each row's values come from
+/// `row(r, buffer)`, which adds row r of H into `buffer` (the columns of J'*D*J set to 0,
+/// every other column of the row to -0, the value 2.2.2's merge of a new column gives:
+/// -0 + x is x bit for bit). The marks are removed.
+pub fn chol_sparse_values(
+    mat: &mut [f64],
+    n: usize,
+    rownnz: &[i32],
+    rowadr: &[i32],
+    colind: &mut [i32],
+    buffer: &mut [f64],
+    mut row: impl FnMut(usize, &mut [f64]),
+) {
+    for r in 0..n {
+        let (adr, nnz) = (u(rowadr[r]), u(rownnz[r]));
+        for c in &mut colind[adr..adr + nnz] {
+            // 0 for a marked column, else -0 (the sign bit of the unmarked)
+            let v = *c;
+            *c = v ^ (v >> 31);
+            buffer[u(*c)] = f64::from_bits(u64::from(v >= 0) << 63);
+        }
+        row(r, buffer);
+        for (x, &c) in mat[adr..adr + nnz].iter_mut().zip(&colind[adr..adr + nnz]) {
+            *x = buffer[u(c)];
+        }
+    }
+}
+
+/// `chol_factor_sparse` on rows whose pattern already holds the factor's
+/// (`chol_sparse_pattern`): each update of a row adds into columns it has, in place, the
+/// same sums in the same order. Errors if a row lacks its diagonal or an update's column.
+pub fn chol_factor_sparse_preset(
+    mat: &mut [f64],
+    n: usize,
+    mindiag: f64,
+    rownnz: &[i32],
+    rowadr: &[i32],
+    colind: &[i32],
+) -> Result<usize, &'static str> {
+    let mut rank = n;
+    for r in (0..n).rev() {
+        let (nnz, adr) = (u(rownnz[r]), u(rowadr[r]));
+        if nnz == 0 || u(colind[adr + nnz - 1]) != r {
+            return Err("Matrix must have non-zero diagonal in mju_cholFactorSparse");
+        }
+        let mut d = mat[adr + nnz - 1];
+        if d < mindiag {
+            d = mindiag;
+            rank -= 1;
+        }
+        mat[adr + nnz - 1] = d.sqrt();
+        let inv = 1.0 / mat[adr + nnz - 1];
+        for x in &mut mat[adr..adr + nnz - 1] {
+            *x *= inv;
+        }
+
+        // row c += -L(r,c) * L(r, 0:c) for every c < r with L(r,c) != 0 (rows c lie below r)
+        let (below, from_r) = mat.split_at_mut(adr);
+        let src = &from_r[..nnz];
+        let src_ind = &colind[adr..adr + nnz];
+        for i in 0..nnz - 1 {
+            let c = u(src_ind[i]);
+            let (ac, nc) = (u(rowadr[c]), u(rownnz[c]));
+            let scl = -src[i];
+            let dst = &mut below[ac..ac + nc];
+            if nc == i + 1 {
+                for (x, &y) in dst.iter_mut().zip(&src[..=i]) {
+                    *x += scl * y;
+                }
+                continue;
+            }
+            let dst_ind = &colind[ac..ac + nc];
+            let mut k = 0;
+            for (&y, &yc) in src[..=i].iter().zip(&src_ind[..=i]) {
+                while k < nc && dst_ind[k] != yc {
+                    k += 1;
+                }
+                if k == nc {
+                    return Err("Varying sparsity pattern in mju_cholFactorSparse");
+                }
+                dst[k] += scl * y;
+                k += 1;
+            }
+        }
+    }
+    Ok(rank)
 }
 
 /// res = (L'*L)^-1 * vec for the factor of `chol_factor_sparse`.

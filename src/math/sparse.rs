@@ -566,39 +566,53 @@ pub fn sqr_mat_td_sparse_values(
         for &ci in &res_colind[adr..adr + n] {
             buffer[u(ci)] = 0.0;
         }
-        let adr_t = u(mt.rowadr[r]);
-        let nnz_t = u(mt.rownnz[r]);
-        let (cols_t, vals_t) = (
-            &mt.colind[adr_t..adr_t + nnz_t],
-            &mat_t[adr_t..adr_t + nnz_t],
-        );
-        let mut i = 0;
-        while i < nnz_t {
-            // rows c, c+1, .. of mat with one pattern (a supernode) add into buffer together:
-            // each element still gets their terms one after another, in order of c
-            let c = u(cols_t[i]);
-            let run = match m.rowsuper {
-                Some(sup) => {
-                    let max = (u(sup[c].max(0)) + 1).min(4).min(nnz_t - i);
-                    1 + (1..max).take_while(|&q| u(cols_t[i + q]) == c + q).count()
-                }
-                None => 1,
-            };
-            let v: [f64; 4] = std::array::from_fn(|q| match (q < run, diag) {
-                (false, _) => 0.0,
-                (true, Some(d)) => vals_t[i + q] * d[c + q],
-                (true, None) => vals_t[i + q],
-            });
-            match run {
-                4 => add_rows_below::<4>(buffer, mat, m, c, r, &v),
-                3 => add_rows_below::<3>(buffer, mat, m, c, r, &v),
-                2 => add_rows_below::<2>(buffer, mat, m, c, r, &v),
-                _ => add_rows_below::<1>(buffer, mat, m, c, r, &v),
-            }
-            i += run;
-        }
+        add_td_row(buffer, r, mat, mat_t, diag, m, mt);
         for (x, &ci) in res[adr..adr + n].iter_mut().zip(&res_colind[adr..adr + n]) {
             *x = buffer[u(ci)];
         }
+    }
+}
+
+/// buffer[c] += (mat' * diag * mat)[r][c] for the columns c <= r of row r's pattern, each
+/// element's terms in order of the rows of mat.
+pub fn add_td_row(
+    buffer: &mut [f64],
+    r: usize,
+    mat: &[f64],
+    mat_t: &[f64],
+    diag: Option<&[f64]>,
+    m: &SparseRef,
+    mt: &SparseRef,
+) {
+    let adr_t = u(mt.rowadr[r]);
+    let nnz_t = u(mt.rownnz[r]);
+    let (cols_t, vals_t) = (
+        &mt.colind[adr_t..adr_t + nnz_t],
+        &mat_t[adr_t..adr_t + nnz_t],
+    );
+    let mut i = 0;
+    while i < nnz_t {
+        // rows c, c+1, .. of mat with one pattern (a supernode) add into buffer together:
+        // each element still gets their terms one after another, in order of c
+        let c = u(cols_t[i]);
+        let run = match m.rowsuper {
+            Some(sup) => {
+                let max = (u(sup[c].max(0)) + 1).min(4).min(nnz_t - i);
+                1 + (1..max).take_while(|&q| u(cols_t[i + q]) == c + q).count()
+            }
+            None => 1,
+        };
+        let v: [f64; 4] = std::array::from_fn(|q| match (q < run, diag) {
+            (false, _) => 0.0,
+            (true, Some(d)) => vals_t[i + q] * d[c + q],
+            (true, None) => vals_t[i + q],
+        });
+        match run {
+            4 => add_rows_below::<4>(buffer, mat, m, c, r, &v),
+            3 => add_rows_below::<3>(buffer, mat, m, c, r, &v),
+            2 => add_rows_below::<2>(buffer, mat, m, c, r, &v),
+            _ => add_rows_below::<1>(buffer, mat, m, c, r, &v),
+        }
+        i += run;
     }
 }

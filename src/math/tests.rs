@@ -679,7 +679,7 @@ fn mul_mat_t_vec_span_is_whole_rows_to_the_bit() {
 }
 
 #[test]
-fn sparse_cholesky_counts_match_the_factorization() {
+fn sparse_cholesky_pattern_laid_out_ahead_gives_the_same_factor() {
     use super::chol_sparse::*;
     let mut rng = Rng(19);
     for trial in 0..200 {
@@ -738,50 +738,41 @@ fn sparse_cholesky_counts_match_the_factorization() {
         );
         assert_eq!(rank, Ok(n));
 
-        let mut count = vec![0; n];
-        let mut work = vec![0; n * n + 4 * n];
-        let total = chol_sparse_counts(
-            n, &own_nnz, &own_adr, &own, &parent, &simple, &mut count, &mut work,
-        );
-        assert_eq!(count, rownnz, "trial {trial}");
-        assert_eq!(total, Some(rownnz.iter().sum::<i32>() as usize));
-        // too little room: no counts
-        let short = total.unwrap() + 4 * n - 1;
-        assert_eq!(
-            chol_sparse_counts(
-                n,
-                &own_nnz,
-                &own_adr,
-                &own,
-                &parent,
-                &simple,
-                &mut count,
-                &mut work[..short],
-            ),
-            None
-        );
-
-        // rows one after another, each with its count's room: the same factor, bit for bit
-        let mut adr = vec![0; n];
-        for r in 1..n {
-            adr[r] = adr[r - 1] + count[r - 1];
-        }
-        let (mut pm, mut pc) = (vec![0.0; n * n], vec![0; n * n]);
-        for r in 0..n {
-            let (s, d, k) = (r * n, adr[r] as usize, in_nnz[r] as usize);
-            pm[d..d + k].copy_from_slice(&in_mat[s..s + k]);
-            pc[d..d + k].copy_from_slice(&in_col[s..s + k]);
-        }
-        let mut pn = in_nnz.clone();
-        let rank = chol_factor_sparse(&mut pm, n, 1e-15, &mut pn, &adr, &mut pc, &mut buf, &mut bi);
+        // the factor's pattern laid out ahead, then its values: the same factor, bit for bit
+        let mut pn = own_nnz.clone();
+        let mut padr = own_adr.clone();
+        let room = own.len() + rownnz.iter().sum::<i32>() as usize + 4 * n;
+        let mut pc = own.clone();
+        pc.resize(room, 0);
+        let first = chol_sparse_pattern(n, &mut pn, &mut padr, &mut pc, &parent, &simple);
+        assert!(first.is_some(), "trial {trial}");
+        assert_eq!(pn, rownnz, "trial {trial}");
+        let mut pm = vec![f64::NAN; room];
+        let mut buf = vec![f64::NAN; n];
+        chol_sparse_values(&mut pm, n, &pn, &padr, &mut pc, &mut buf, |r, buf| {
+            for k in r * n..r * n + in_nnz[r] as usize {
+                buf[in_col[k] as usize] = in_mat[k];
+            }
+        });
+        let rank = chol_factor_sparse_preset(&mut pm, n, 1e-15, &pn, &padr, &pc);
         assert_eq!(rank, Ok(n));
-        assert_eq!(pn, rownnz);
         for r in 0..n {
-            let (s, d, k) = (r * n, adr[r] as usize, rownnz[r] as usize);
-            assert_eq!(&pc[d..d + k], &colind[s..s + k]);
+            let (s, d, k) = (r * n, padr[r] as usize, rownnz[r] as usize);
+            assert_eq!(&pc[d..d + k], &colind[s..s + k], "trial {trial} row {r}");
             let same = pm[d..d + k].iter().zip(&mat[s..s + k]);
             assert!(same.into_iter().all(|(a, b)| a.to_bits() == b.to_bits()));
+            if r > 0 {
+                assert_eq!(padr[r], padr[r - 1] + pn[r - 1]);
+            }
         }
+        // too little room for the rows: no pattern
+        let (mut pn, mut padr) = (own_nnz.clone(), own_adr.clone());
+        let mut pc = own.clone();
+        pc.resize(own.len().max(room - own.len() - 1), 0);
+        assert_eq!(
+            chol_sparse_pattern(n, &mut pn, &mut padr, &mut pc, &parent, &simple),
+            None
+        );
     }
 }
 
