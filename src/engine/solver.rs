@@ -16,8 +16,8 @@ use crate::math::chol_sparse::{
     chol_sparse_values, chol_update_sparse,
 };
 use crate::math::sparse::{
-    add_td_row, compress_sparse, dot_sparse, mul_mat_vec_sparse, sqr_mat_td_sparse_pattern,
-    sqr_mat_td_sparse_values, SparseRef,
+    add_td_row, compress_sparse, dot_sparse, keep_nonfinite_rows, mul_mat_vec_sparse,
+    sqr_mat_td_sparse_pattern, sqr_mat_td_sparse_values, SparseRef,
 };
 use mjtConstraintState_::*;
 
@@ -734,6 +734,8 @@ fn hessian_direct(m: &Model, d: &mut Data, a: &mut Arena, c: &mut Ctx) -> Result
                 colind: d.efc_JT_colind,
                 rowsuper: Some(d.efc_JT_rowsuper),
             };
+            // rows out of the quadratic state add only zeros, left out where finite
+            keep_nonfinite_rows(hdiag, d.efc_J, &pat);
             let preset = a.scope(|a| -> Result<bool, EngineError> {
                 let chain = a.alloc_int_stale(2 * nv)?;
                 let buf = a.alloc_stale(nv)?;
@@ -744,7 +746,7 @@ fn hessian_direct(m: &Model, d: &mut Data, a: &mut Arena, c: &mut Ctx) -> Result
                     // H = J'*D*J + M row by row, into the factor's pattern
                     let (qm, madr) = (&*d.qM, m.dof_Madr());
                     chol_sparse_values(c.h, nv, rownnz, rowadr, colind, buf, |r, buf| {
-                        add_td_row(buf, r, d.efc_J, d.efc_JT, Some(hdiag), &pat, &pat_t);
+                        add_td_row(buf, r, d.efc_J, d.efc_JT, Some(hdiag), true, &pat, &pat_t);
                         let (mut j, mut adr) = (r as i32, madr[r] as usize);
                         while j >= 0 {
                             buf[j as usize] += qm[adr];

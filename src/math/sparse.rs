@@ -566,21 +566,39 @@ pub fn sqr_mat_td_sparse_values(
         for &ci in &res_colind[adr..adr + n] {
             buffer[u(ci)] = 0.0;
         }
-        add_td_row(buffer, r, mat, mat_t, diag, m, mt);
+        add_td_row(buffer, r, mat, mat_t, diag, false, m, mt);
         for (x, &ci) in res[adr..adr + n].iter_mut().zip(&res_colind[adr..adr + n]) {
             *x = buffer[u(ci)];
         }
     }
 }
 
+/// Marks the rows of mat whose diag is 0 and that hold an infinity or NaN with -0, which
+/// `add_td_row` with `skip_zero` keeps (their products are NaN, not zeros; -0 and +0 give the
+/// same results bit for bit in every term).
+pub fn keep_nonfinite_rows(diag: &mut [f64], mat: &[f64], m: &SparseRef) {
+    for (i, x) in diag.iter_mut().enumerate() {
+        if *x == 0.0 {
+            let (n, adr) = (u(m.rownnz[i]), u(m.rowadr[i]));
+            if !mat[adr..adr + n].iter().all(|v| v.is_finite()) {
+                *x = -0.0;
+            }
+        }
+    }
+}
+
 /// buffer[c] += (mat' * diag * mat)[r][c] for the columns c <= r of row r's pattern, each
-/// element's terms in order of the rows of mat.
+/// element's terms in order of the rows of mat. With `skip_zero`, rows of mat whose diag is +0
+/// are left out: for the caller to ask only where those rows are finite (their terms zeros)
+/// and the sums in buffer start at +0 (which zeros leave as they are).
+#[allow(clippy::too_many_arguments)]
 pub fn add_td_row(
     buffer: &mut [f64],
     r: usize,
     mat: &[f64],
     mat_t: &[f64],
     diag: Option<&[f64]>,
+    skip_zero: bool,
     m: &SparseRef,
     mt: &SparseRef,
 ) {
@@ -602,6 +620,12 @@ pub fn add_td_row(
             }
             None => 1,
         };
+        if let (true, Some(d)) = (skip_zero, diag) {
+            if d[c..c + run].iter().all(|x| x.to_bits() == 0) {
+                i += run;
+                continue;
+            }
+        }
         let v: [f64; 4] = std::array::from_fn(|q| match (q < run, diag) {
             (false, _) => 0.0,
             (true, Some(d)) => vals_t[i + q] * d[c + q],
