@@ -489,8 +489,12 @@ fn td_rows_without_zero_rows_give_the_same_sums() {
             }
         }
         // the pattern: nonzero bits (a -0 entry counts)
-        let (mut s, mut nnz, mut adr, mut col) =
-            (vec![0.0; nr * nc], vec![0; nr], vec![0; nr], vec![0; nr * nc]);
+        let (mut s, mut nnz, mut adr, mut col) = (
+            vec![0.0; nr * nc],
+            vec![0; nr],
+            vec![0; nr],
+            vec![0; nr * nc],
+        );
         let mut k = 0;
         for r in 0..nr {
             adr[r] = k as i32;
@@ -503,8 +507,12 @@ fn td_rows_without_zero_rows_give_the_same_sums() {
             }
             nnz[r] = k as i32 - adr[r];
         }
-        let (mut t, mut tn, mut ta, mut tc) =
-            (vec![0.0; nr * nc], vec![0; nc], vec![0; nc], vec![0; nr * nc]);
+        let (mut t, mut tn, mut ta, mut tc) = (
+            vec![0.0; nr * nc],
+            vec![0; nc],
+            vec![0; nc],
+            vec![0; nr * nc],
+        );
         transpose_sparse(
             &mut t, &s, nr, nc, &mut tn, &mut ta, &mut tc, &nnz, &adr, &col,
         );
@@ -532,7 +540,10 @@ fn td_rows_without_zero_rows_give_the_same_sums() {
             let (mut all, mut some) = (vec![0.0; nc], vec![0.0; nc]);
             add_td_row(&mut all, r, &s, &t, Some(&diag), false, &m, &mt);
             add_td_row(&mut some, r, &s, &t, Some(&marked), true, &m, &mt);
-            let same = all.iter().zip(&some).all(|(x, y)| x.to_bits() == y.to_bits());
+            let same = all
+                .iter()
+                .zip(&some)
+                .all(|(x, y)| x.to_bits() == y.to_bits());
             assert!(same, "trial {trial} row {r}: {all:?} {some:?}");
         }
     }
