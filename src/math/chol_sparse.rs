@@ -47,16 +47,7 @@ pub fn chol_factor_sparse(
 
     for r in (0..n).rev() {
         let (nnz, adr) = (u(rownnz[r]), u(rowadr[r]));
-        let mut d = mat[adr + nnz - 1];
-        if d < mindiag {
-            d = mindiag;
-            rank -= 1;
-        }
-        mat[adr + nnz - 1] = d.sqrt();
-        let inv = 1.0 / mat[adr + nnz - 1];
-        for x in &mut mat[adr..adr + nnz - 1] {
-            *x *= inv;
-        }
+        rank -= scale_row(&mut mat[adr..adr + nnz], mindiag);
 
         // row c -= L(r,c) * L(r, 0:c) for every c < r with L(r,c) != 0
         for i in 0..nnz - 1 {
@@ -82,6 +73,21 @@ pub fn chol_factor_sparse(
         }
     }
     Ok(rank)
+}
+
+/// Row r of the factor from what the rows below left of H's: its diagonal (the last entry;
+/// `mindiag` where below it) to its square root, the entries before it times the root's
+/// reciprocal. Returns 1 where the diagonal was replaced, else 0.
+#[inline]
+fn scale_row(row: &mut [f64], mindiag: f64) -> usize {
+    let (rest, diag) = row.split_at_mut(row.len() - 1);
+    let low = diag[0] < mindiag;
+    diag[0] = if low { mindiag } else { diag[0] }.sqrt();
+    let inv = 1.0 / diag[0];
+    for x in rest {
+        *x *= inv;
+    }
+    usize::from(low)
 }
 
 /// Lays out the pattern of `chol_factor_sparse`'s factor of H = J'*D*J + M ahead of the
@@ -238,16 +244,7 @@ pub fn chol_factor_sparse_preset(
         if nnz == 0 || u(colind[adr + nnz - 1]) != r {
             return Err("Matrix must have non-zero diagonal in mju_cholFactorSparse");
         }
-        let mut d = mat[adr + nnz - 1];
-        if d < mindiag {
-            d = mindiag;
-            rank -= 1;
-        }
-        mat[adr + nnz - 1] = d.sqrt();
-        let inv = 1.0 / mat[adr + nnz - 1];
-        for x in &mut mat[adr..adr + nnz - 1] {
-            *x *= inv;
-        }
+        rank -= scale_row(&mut mat[adr..adr + nnz], mindiag);
 
         // row c += -L(r,c) * L(r, 0:c) for every c < r with L(r,c) != 0 (rows c lie below r)
         let (below, from_r) = mat.split_at_mut(adr);
