@@ -255,20 +255,46 @@ pub fn mul_m2(m: &Model, qld: &[f64], sqrt_inv: &[f64], res: &mut [f64], vec: &[
 pub fn add_m_dense(m: &Model, qm: &[f64], dst: &mut [f64], upper: bool) {
     let nv = m.raw.nv as usize;
     for i in 0..nv {
-        let mut adr = m.dof_Madr()[i] as usize;
-        let mut j = i as i32;
-        while j >= 0 {
-            let ju = j as usize;
-            dst[i * nv + ju] += qm[adr];
-            if upper && ju < i {
-                dst[ju * nv + i] += qm[adr];
+        for (j, adr) in m_row(m, i) {
+            dst[i * nv + j] += qm[adr];
+            if upper && j < i {
+                dst[j * nv + i] += qm[adr];
             }
-            if m.dof_simplenum()[i] != 0 {
-                break;
-            }
-            j = m.dof_parentid()[ju];
-            adr += 1;
         }
+    }
+}
+
+/// The entries of row i of M's lower triangle that mj_addM adds, as (column, address in qM):
+/// the diagonal, then i's ancestors unless dof i is simple.
+pub(crate) fn m_row<'b>(m: &'b Model, i: usize) -> MRow<'b> {
+    MRow {
+        parent: m.dof_parentid(),
+        simple: m.dof_simplenum()[i] != 0,
+        j: i as i32,
+        adr: m.dof_Madr()[i] as usize,
+    }
+}
+
+/// Iterator of `m_row`.
+pub(crate) struct MRow<'a> {
+    parent: &'a [i32],
+    simple: bool,
+    j: i32,
+    adr: usize,
+}
+
+impl Iterator for MRow<'_> {
+    type Item = (usize, usize);
+
+    #[inline]
+    fn next(&mut self) -> Option<(usize, usize)> {
+        if self.j < 0 {
+            return None;
+        }
+        let item = (self.j as usize, self.adr);
+        self.j = if self.simple { -1 } else { self.parent[item.0] };
+        self.adr += 1;
+        Some(item)
     }
 }
 

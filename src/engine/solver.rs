@@ -4,7 +4,7 @@
 
 use super::constraint::{constraint_update, is_sparse, jac_view, with_arena};
 use super::inertia::solve_ld;
-use super::jacobian::{add_m_dense, add_m_sparse_with, mul_m};
+use super::jacobian::{add_m_dense, add_m_sparse_with, m_row, mul_m};
 use super::solver_dual::{cost_change, noslip_elliptic, noslip_pyramid, pgs_elliptic, residual};
 use super::{disabled, tick, Data, EngineError, Model, MINVAL};
 use crate::abi::view::Arena;
@@ -742,19 +742,12 @@ fn hessian_direct(m: &Model, d: &mut Data, a: &mut Arena, c: &mut Ctx) -> Result
                 let (rownnz, rowadr, colind) = (&mut *c.rownnz, &mut *c.rowadr, &mut *c.colind);
                 sqr_mat_td_sparse_pattern(nv, rownnz, rowadr, colind, &pat, &pat_t, chain, true);
                 let (parent, simple) = (m.dof_parentid(), m.dof_simplenum());
-                if chol_sparse_pattern(nv, rownnz, rowadr, colind, parent, simple).is_some() {
+                if chol_sparse_pattern(nv, rownnz, rowadr, colind, parent, simple) {
                     // H = J'*D*J + M row by row, into the factor's pattern
-                    let (qm, madr) = (&*d.qM, m.dof_Madr());
                     chol_sparse_values(c.h, nv, rownnz, rowadr, colind, buf, |r, buf| {
                         add_td_row(buf, r, d.efc_J, d.efc_JT, Some(hdiag), true, &pat, &pat_t);
-                        let (mut j, mut adr) = (r as i32, madr[r] as usize);
-                        while j >= 0 {
-                            buf[j as usize] += qm[adr];
-                            if simple[r] != 0 {
-                                break;
-                            }
-                            j = parent[j as usize];
-                            adr += 1;
+                        for (j, adr) in m_row(m, r) {
+                            buf[j] += d.qM[adr];
                         }
                     });
                     return Ok(true);

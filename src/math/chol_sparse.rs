@@ -97,7 +97,7 @@ fn scale_row(row: &mut [f64], mindiag: f64) -> usize {
 /// stored as `!col` (marked, see `chol_sparse_values`), M's (its diagonal, and r's ancestors
 /// in `parent` where `simple[r]` is 0) and the fill-in of the factorization, which row r takes
 /// from its children in the elimination tree (the rows whose largest index below the diagonal
-/// is r). Returns the address of row 0, or None when the rows do not fit beside the input.
+/// is r). Returns false when the rows do not fit beside the input.
 pub fn chol_sparse_pattern(
     n: usize,
     rownnz: &mut [i32],
@@ -105,14 +105,15 @@ pub fn chol_sparse_pattern(
     colind: &mut [i32],
     parent: &[i32],
     simple: &[i32],
-) -> Option<usize> {
-    let len = colind.len().checked_sub(4 * n)?;
+) -> bool {
+    let Some(len) = colind.len().checked_sub(4 * n) else {
+        return false;
+    };
     let (rows, work) = colind.split_at_mut(len);
     let (head, work) = work.split_at_mut(n);
     let (next, work) = work.split_at_mut(n);
     let (mut a, mut b) = work.split_at_mut(n);
     head.fill(-1);
-    let col = |v: i32| if v < 0 { !v } else { v };
     let mut top = len;
     for r in (0..n).rev() {
         let ri = r as i32;
@@ -131,7 +132,7 @@ pub fn chol_sparse_pattern(
         // with J'*D*J's (marked) in a
         let (start, end) = (u(rowadr[r]), u(rowadr[r]) + u(rownnz[r]));
         if end > len {
-            return None;
+            return false;
         }
         let own = &rows[start..end];
         let mut na = merge_marked(own, &b[..nm], a, true);
@@ -147,30 +148,35 @@ pub fn chol_sparse_pattern(
         }
         // rows below r still hold their input below row r's
         if top < start + na {
-            return None;
+            return false;
         }
         top -= na;
         rows[top..top + na].copy_from_slice(&a[..na]);
         rowadr[r] = top as i32;
         rownnz[r] = na as i32;
         if na >= 2 {
-            let up = u(col(a[na - 2]));
+            let up = u(unmark(a[na - 2]));
             next[r] = head[up];
             head[up] = ri;
         }
     }
-    Some(top)
+    true
+}
+
+/// A column stored marked (`!col`) or not, as the column.
+#[inline]
+fn unmark(v: i32) -> i32 {
+    v ^ (v >> 31)
 }
 
 /// Merges two ascending column lists into `out` (duplicates once) and returns its length.
 /// `x` may hold marked columns (`!col`), which stay marked; with `mark_y` the columns of y
 /// are marked (J'*D*J's own), else y's marks are dropped (a child's).
 fn merge_marked(x: &[i32], y: &[i32], out: &mut [i32], mark_y: bool) -> usize {
-    let col = |v: i32| if v < 0 { !v } else { v };
-    let yv = |v: i32| if mark_y { !col(v) } else { col(v) };
+    let yv = |v: i32| if mark_y { !unmark(v) } else { unmark(v) };
     let (mut i, mut k, mut nout) = (0, 0, 0);
     while i < x.len() && k < y.len() {
-        let (cx, cy) = (col(x[i]), col(y[k]));
+        let (cx, cy) = (unmark(x[i]), unmark(y[k]));
         out[nout] = if cx < cy {
             i += 1;
             x[i - 1]
@@ -217,7 +223,7 @@ pub fn chol_sparse_values(
         for c in &mut colind[adr..adr + nnz] {
             // 0 for a marked column, else -0 (the sign bit of the unmarked)
             let v = *c;
-            *c = v ^ (v >> 31);
+            *c = unmark(v);
             buffer[u(*c)] = f64::from_bits(u64::from(v >= 0) << 63);
         }
         row(r, buffer);
