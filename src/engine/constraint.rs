@@ -935,6 +935,8 @@ fn project_sparse(
         &pat,
         chain,
         buffer,
+        // rows coupled through a dof are coupled through its tree's root, on both
+        |c| parent[c] < 0,
     );
     mirror_lower_sparse(d.efc_AR, nefc, d.efc_AR_rownnz, d.efc_AR_colind);
     compress_sparse(

@@ -740,7 +740,8 @@ fn hessian_direct(m: &Model, d: &mut Data, a: &mut Arena, c: &mut Ctx) -> Result
                 let chain = a.alloc_int_stale(2 * nv)?;
                 let buf = a.alloc_stale(nv)?;
                 let (rownnz, rowadr, colind) = (&mut *c.rownnz, &mut *c.rowadr, &mut *c.colind);
-                sqr_mat_td_sparse_pattern(nv, rownnz, rowadr, colind, &pat, &pat_t, chain, true);
+                let rows = (&mut *rownnz, &mut *rowadr, &mut *colind);
+                sqr_mat_td_sparse_pattern(nv, rows, &pat, &pat_t, chain, true, |_| true);
                 let (parent, simple) = (m.dof_parentid(), m.dof_simplenum());
                 if chol_sparse_pattern(nv, rownnz, rowadr, colind, parent, simple) {
                     // H = J'*D*J + M row by row, into the factor's pattern
@@ -753,7 +754,8 @@ fn hessian_direct(m: &Model, d: &mut Data, a: &mut Arena, c: &mut Ctx) -> Result
                     return Ok(true);
                 }
                 // rows nv apart, filled in by the merges of adding M and factorizing
-                sqr_mat_td_sparse_pattern(nv, rownnz, rowadr, colind, &pat, &pat_t, chain, false);
+                let rows = (&mut *rownnz, &mut *rowadr, &mut *colind);
+                sqr_mat_td_sparse_pattern(nv, rows, &pat, &pat_t, chain, false, |_| true);
                 sqr_mat_td_sparse_values(
                     c.h,
                     d.efc_J,

@@ -444,7 +444,8 @@ pub fn mirror_lower_sparse(
 /// res (nc x nc, uncompressed with stride nc) = mat^T * diag * mat, mat being nr x nc and
 /// matT its transpose, in the lower triangle (each row ends at its diagonal): enough for a
 /// Cholesky factorization, which reads nothing above the diagonal; `mirror_lower_sparse` then
-/// gives the whole matrix. `chain` needs 2*nc ints and `buffer` nc values of scratch.
+/// gives the whole matrix. `chain` needs 2*nc ints and `buffer` nc values of scratch;
+/// `merged` as `sqr_mat_td_sparse_pattern` takes it.
 #[allow(clippy::too_many_arguments)]
 pub fn sqr_mat_td_sparse_lower(
     res: &mut [f64],
@@ -459,25 +460,29 @@ pub fn sqr_mat_td_sparse_lower(
     mt: &SparseRef,
     chain: &mut [i32],
     buffer: &mut [f64],
+    merged: impl Fn(usize) -> bool,
 ) {
-    sqr_mat_td_sparse_pattern(nc, res_rownnz, res_rowadr, res_colind, m, mt, chain, false);
+    let rows = (&mut *res_rownnz, &mut *res_rowadr, &mut *res_colind);
+    sqr_mat_td_sparse_pattern(nc, rows, m, mt, chain, false, merged);
     sqr_mat_td_sparse_values(
         res, mat, mat_t, diag, nc, res_rownnz, res_rowadr, res_colind, m, mt, buffer,
     );
 }
 
 /// The pattern of `sqr_mat_td_sparse_lower`'s rows: each row at r*nc, or (`packed`) right
-/// after the one before; returns the number of entries.
-#[allow(clippy::too_many_arguments)]
+/// after the one before; returns the number of entries. Row r is the union of the rows of m
+/// at the columns of mt's row r, up to r; only those columns c where `merged(c)` are merged,
+/// which leaves the union as it is where each column left out has its row of m within the
+/// row of a merged column of the same mt row (ancestors' dofs on completed chains: a tree's
+/// root dof is on every row that holds one of its dofs).
 pub fn sqr_mat_td_sparse_pattern(
     nc: usize,
-    res_rownnz: &mut [i32],
-    res_rowadr: &mut [i32],
-    res_colind: &mut [i32],
+    (res_rownnz, res_rowadr, res_colind): (&mut [i32], &mut [i32], &mut [i32]),
     m: &SparseRef,
     mt: &SparseRef,
     chain: &mut [i32],
     packed: bool,
+    merged: impl Fn(usize) -> bool,
 ) -> usize {
     let mut next = 0;
     for r in 0..nc {
@@ -502,6 +507,9 @@ pub fn sqr_mat_td_sparse_pattern(
         let adr_t = u(mt.rowadr[r]);
         for i in 0..u(mt.rownnz[r]) {
             let c = mt.colind[adr_t + i];
+            if !merged(u(c)) {
+                continue;
+            }
             if let Some(rs) = m.rowsuper {
                 if lastadded >= 0 && c - lastadded <= rs[u(lastadded)] {
                     continue;

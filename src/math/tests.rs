@@ -426,6 +426,7 @@ fn sparse_products_match_dense() {
             &mt,
             &mut chain,
             &mut buffer,
+            |_| true,
         );
         mirror_lower_sparse(&mut h, nc, &mut hn, &mut hc);
         let mut hd = [0.0; 25];
@@ -983,5 +984,85 @@ fn small_products_skip_zeros_as_branches() {
             let got = spatial::mul_dof_vec(&dofs, w, n);
             assert_eq!(got.map(f64::to_bits), want.map(f64::to_bits), "{n}");
         }
+    }
+}
+
+#[test]
+fn sqr_pattern_of_completed_chains_merges_only_tree_roots() {
+    use super::sparse::*;
+    let mut rng = Rng(41);
+    for trial in 0..200 {
+        // a forest of nv dofs (parents before children), rows on chains completed to roots
+        let nv = 2 + trial % 19;
+        let parent: Vec<i32> = (0..nv)
+            .map(|i| {
+                let r = rng.next();
+                if i == 0 || r < -1.2 {
+                    -1
+                } else {
+                    ((r + 2.0) / 4.0 * i as f64) as i32
+                }
+            })
+            .collect();
+        let nr = 1 + (rng.next() + 2.0) as usize * 5;
+        let (mut nnz, mut adr, mut col) = (vec![], vec![], vec![]);
+        for r in 0..nr {
+            let mut on = vec![false; nv];
+            for _ in 0..(rng.next() + 2.0) as usize {
+                let mut c = (((rng.next() + 2.0) / 4.0 * nv as f64) as usize).min(nv - 1) as i32;
+                while c >= 0 {
+                    on[c as usize] = true;
+                    c = parent[c as usize];
+                }
+            }
+            // now and then an empty row, or rows repeated (supernodes)
+            if r > 0 && rng.next() < -1.0 {
+                let (a, n) = (adr[r - 1] as usize, nnz[r - 1] as usize);
+                on = vec![false; nv];
+                for &c in &col[a..a + n] {
+                    on[c as usize] = true;
+                }
+            }
+            adr.push(col.len() as i32);
+            col.extend((0..nv as i32).filter(|&c| on[c as usize]));
+            nnz.push(col.len() as i32 - adr[r]);
+        }
+        let vals = vec![1.0; col.len()];
+        let (mut t, mut tn, mut ta, mut tc) = (
+            vec![0.0; nr * nv],
+            vec![0; nv],
+            vec![0; nv],
+            vec![0; nr * nv],
+        );
+        transpose_sparse(
+            &mut t, &vals, nr, nv, &mut tn, &mut ta, &mut tc, &nnz, &adr, &col,
+        );
+        let (mut sup, mut sup_t) = (vec![0; nr], vec![0; nv]);
+        super_sparse(nr, &mut sup, &nnz, &adr, &col);
+        super_sparse(nv, &mut sup_t, &tn, &ta, &tc);
+        // A = B'B with B = the transpose (nv x nr): its rows merge the dofs' rows
+        let m = SparseRef {
+            rownnz: &tn,
+            rowadr: &ta,
+            colind: &tc,
+            rowsuper: Some(&sup_t),
+        };
+        let mt = SparseRef {
+            rownnz: &nnz,
+            rowadr: &adr,
+            colind: &col,
+            rowsuper: Some(&sup),
+        };
+        let pattern = |merged: &dyn Fn(usize) -> bool| {
+            let (mut n, mut a, mut c) = (vec![0; nr], vec![0; nr], vec![-1; nr * nr]);
+            let mut chain = vec![0; 2 * nr];
+            let rows = (&mut n[..], &mut a[..], &mut c[..]);
+            sqr_mat_td_sparse_pattern(nr, rows, &m, &mt, &mut chain, false, merged);
+            (n, a, c)
+        };
+        let all = pattern(&|_| true);
+        let roots = pattern(&|c| parent[c] < 0);
+        assert_eq!(all, roots, "trial {trial}");
+        assert!(all.0.iter().zip(&nnz).all(|(&p, &n)| (p > 0) == (n > 0)));
     }
 }
