@@ -884,6 +884,24 @@ fn project_sparse(
         }
         colind[adr..adr + nnz].reverse();
         jm2[adr..adr + nnz].reverse();
+        // one path from the root (a body's contact with the world, a joint's limit): the
+        // ancestors of each entry are the entries before it, nearest first
+        let cols = &colind[adr..adr + nnz];
+        if cols.windows(2).all(|w| parent[w[1] as usize] == w[0]) {
+            let row = &mut jm2[adr..adr + nnz];
+            for i in (0..nnz).rev() {
+                let xi = row[i];
+                if xi != 0.0 {
+                    let c = cols[i] as usize;
+                    row[i] *= d.qLDiagSqrtInv[c];
+                    let madr = m.dof_Madr()[c] as usize + 1;
+                    for (x, l) in row[..i].iter_mut().rev().zip(&d.qLD[madr..madr + i]) {
+                        *x -= l * xi;
+                    }
+                }
+            }
+            continue;
+        }
         for i in (0..nnz).rev() {
             let xi = jm2[adr + i];
             let mut pi = i;
