@@ -453,6 +453,20 @@ impl<'a> Arena<'a> {
         Ok(unsafe { std::slice::from_raw_parts_mut(words.as_mut_ptr() as *mut i32, n) })
     }
 
+    /// `n` ints, not zeroed, taken as `n` mjtNums (2.2.2's `(int*)mj_stackAlloc(d, n)`):
+    /// packed two to a slot, and the slots they leave free given back as scratch.
+    #[inline]
+    pub fn alloc_int_stale_spare(
+        &mut self,
+        n: usize,
+    ) -> Result<(&'a mut [i32], &'a mut [f64]), EngineError> {
+        let words = self.alloc_stale(n)?;
+        let (ints, spare) = words.split_at_mut(n.div_ceil(2));
+        // SAFETY: f64 storage is 8-aligned, initialized and holds 2 * ceil(n / 2) >= n i32s.
+        let ints = unsafe { std::slice::from_raw_parts_mut(ints.as_mut_ptr() as *mut i32, n) };
+        Ok((ints, spare))
+    }
+
     /// `n` zeroed ints, taken from the same stack: one mjtNum each, as 2.2.2's
     /// `(int*)mj_stackAlloc(d, n)` takes them (so that `maxuse_stack` counts as 2.2.2's).
     #[inline]

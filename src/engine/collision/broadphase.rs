@@ -166,6 +166,17 @@ fn sweep_only() -> bool {
     false
 }
 
+/// The sweep tests the active bodies one at a time (the tests compare the two ways).
+#[cfg(test)]
+fn scalar_sweep() -> bool {
+    super::tests::SCALAR_SWEEP.with(|f| f.get())
+}
+#[cfg(not(test))]
+#[inline(always)]
+fn scalar_sweep() -> bool {
+    false
+}
+
 #[cfg(test)]
 fn frameless_taken() {
     super::tests::FRAMELESS.with(|n| n.set(n.get() + 1));
@@ -326,10 +337,9 @@ pub fn broadphase<'a>(
 ) -> Result<&'a mut [i32], EngineError> {
     let nbody = m.raw.nbody as usize;
     let maxpair = nbody * (nbody - 1) / 2;
-    let mut pairs = Pairs {
-        pair: a.alloc_int_stale(maxpair)?,
-        n: 0,
-    };
+    // 2.2.2 takes a slot per pair and fills half of it: the other halves serve the sweep
+    let (pair, spare) = a.alloc_int_stale_spare(maxpair)?;
+    let mut pairs = Pairs { pair, n: 0 };
 
     // the world's geoms, and planes or height fields welded to it, meet every body
     for b1 in (0..nbody).filter(|&b| can_collide(m, b)) {
@@ -345,7 +355,7 @@ pub fn broadphase<'a>(
     if m.geom_bodyid().iter().any(|&b| b != 0) {
         // its buffers are released on return, the pair list stays (the contact filter then
         // sees 2.2.2's stack top)
-        a.scope(|a| sweep_and_prune(m, d, a, &mut pairs))?;
+        a.scope(|a| sweep_and_prune(m, d, a, &mut pairs, spare))?;
     }
 
     // integers: any sort gives glibc's order
@@ -354,12 +364,14 @@ pub fn broadphase<'a>(
     Ok(&mut pairs.pair[..n])
 }
 
-/// Sweep along the first axis (f32 keys, as 2.2.2), pruning by the other two.
+/// Sweep along the first axis (f32 keys, as 2.2.2), pruning by the other two. `spare`:
+/// scratch for `sweep`, which takes over where it holds 6 slots per swept body.
 fn sweep_and_prune(
     m: &Model,
     d: &Data,
     a: &mut Arena,
     pairs: &mut Pairs,
+    spare: &mut [f64],
 ) -> Result<(), EngineError> {
     let nbody = m.raw.nbody as usize;
     let aabb = a.alloc(6 * nbody)?;
@@ -434,6 +446,9 @@ fn sweep_and_prune(
         }
     }
 
+    if spare.len() >= 6 * count && !scalar_sweep() {
+        return sweep(m, pairs, entries, active, &mut aabb[..], spare);
+    }
     let mut nactive = 0;
     for &e in entries.iter() {
         let e = ismax(e);
@@ -455,6 +470,88 @@ fn sweep_and_prune(
                 active.copy_within(k + 1..nactive, k);
                 nactive -= 1;
             }
+        }
+    }
+    Ok(())
+}
+
+/// The sweep over the sorted ends with the active bodies' bounds on axes 1 and 2 kept beside
+/// them, and the masks of those with one geom (`spare`: 6 slots per swept body): each new body
+/// meets the active ones four at a time with the same tests (NaN bounds overlap), and the
+/// pairs of two one-geom bodies whose masks do not match are left out (as `Pairs::add` does)
+/// from those masks. A body leaves the active list by swapping in the last one, its place found
+/// in `aabb`'s slot for its lower bound on axis 0 (read already): the pairs come in another
+/// order, the same pairs (the list is sorted after).
+fn sweep(
+    m: &Model,
+    pairs: &mut Pairs,
+    entries: &[u64],
+    active: &mut [u64],
+    aabb: &mut [f64],
+    spare: &mut [f64],
+) -> Result<(), EngineError> {
+    const MAX: u64 = 0x10000;
+    let n = spare.len() / 6;
+    let (lo1, rest) = spare.split_at_mut(n);
+    let (hi1, rest) = rest.split_at_mut(n);
+    let (lo2, rest) = rest.split_at_mut(n);
+    let (hi2, rest) = rest.split_at_mut(n);
+    let (contype, conaffinity) = rest.split_at_mut(n);
+    // a body's masks if it has one geom, else NaN (no filter)
+    let masks = |b: usize| match m.body_geomnum()[b] {
+        1 => {
+            let g = m.body_geomadr()[b] as usize;
+            (m.geom_contype()[g] as f64, m.geom_conaffinity()[g] as f64)
+        }
+        _ => (f64::NAN, f64::NAN),
+    };
+    for &e in entries {
+        aabb[6 * (e & 0xFFFF) as usize] = -1.0;
+    }
+    let mut nactive = 0;
+    for &e in entries {
+        let e = e & 0xFFFF_FFFF;
+        let b = (e & 0xFFFF) as usize;
+        if e & MAX == 0 {
+            let q = [
+                aabb[6 * b + 2],
+                aabb[6 * b + 3],
+                aabb[6 * b + 4],
+                aabb[6 * b + 5],
+            ];
+            let near =
+                |k: usize| !((lo1[k] > q[1]) | (hi1[k] < q[0]) | (lo2[k] > q[3]) | (hi2[k] < q[2]));
+            let (ct, ca) = masks(b);
+            for base in (0..nactive).step_by(4) {
+                let mut hits = 0u32;
+                for k in 0..4 {
+                    hits |= u32::from(near((base + k).min(nactive - 1))) << k;
+                }
+                hits &= (1u32 << (nactive - base).min(4)) - 1;
+                while hits != 0 {
+                    let k = base + hits.trailing_zeros() as usize;
+                    hits &= hits - 1;
+                    let (ct1, ca1) = (contype[k], conaffinity[k]);
+                    let single = !ct.is_nan() && !ct1.is_nan();
+                    if single && (ct1 as i32 & ca as i32) == 0 && (ct as i32 & ca1 as i32) == 0 {
+                        continue;
+                    }
+                    pairs.add(m, false, active[k] as usize, b)?;
+                }
+            }
+            active[nactive] = b as u64;
+            (lo1[nactive], hi1[nactive], lo2[nactive], hi2[nactive]) = (q[0], q[1], q[2], q[3]);
+            (contype[nactive], conaffinity[nactive]) = (ct, ca);
+            aabb[6 * b] = nactive as f64;
+            nactive += 1;
+        } else if aabb[6 * b] >= 0.0 {
+            let (k, last) = (aabb[6 * b] as usize, nactive - 1);
+            active[k] = active[last];
+            (lo1[k], hi1[k], lo2[k], hi2[k]) = (lo1[last], hi1[last], lo2[last], hi2[last]);
+            (contype[k], conaffinity[k]) = (contype[last], conaffinity[last]);
+            aabb[6 * active[k] as usize] = k as f64;
+            aabb[6 * b] = -1.0;
+            nactive -= 1;
         }
     }
     Ok(())

@@ -305,6 +305,8 @@ fn heightfield_collision() {
 thread_local! {
     /// Set: the broad phase always sweeps in the principal frame.
     pub static SWEEP_ONLY: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+    /// Set: the sweep tests the active bodies one at a time.
+    pub static SCALAR_SWEEP: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
     /// Times the broad phase found its pairs without the frame.
     pub static FRAMELESS: std::cell::Cell<usize> = const { std::cell::Cell::new(0) };
     /// Set: the collision loop tests every geom pair one at a time.
@@ -417,6 +419,65 @@ fn frameless_broadphase_gives_the_sweeps_contacts() {
         }
         assert!(FRAMELESS.with(|n| n.get()) > 100 && touching > 100);
     }
+}
+
+/// The sweep that meets the active bodies four at a time (their bounds and masks beside the
+/// list) gives the pair list of the one at a time: random poses of 40 free bodies, of one geom
+/// or two, of several masks, packed from overlapping to apart, some on the same spot (equal
+/// keys), some with NaN positions (the merge sort's order, bodies whose upper end comes first).
+#[test]
+fn sweep_four_at_a_time_gives_the_pairs_of_one_at_a_time() {
+    let masks = [(0, 1), (1, 1), (1, 0), (2, 2), (1, 2), (3, 1)];
+    let mut xml = String::from("<mujoco><worldbody><geom type=\"plane\" size=\"5 5 .1\"/>");
+    for b in 0..40 {
+        let (t, a) = masks[b % masks.len()];
+        xml += &format!("<body pos=\"0 0 {b}\"><freejoint/>");
+        xml += &format!("<geom size=\".1\" contype=\"{t}\" conaffinity=\"{a}\"/>");
+        if b % 5 == 0 {
+            xml += "<geom size=\".05\" pos=\".2 0 0\" contype=\"1\" conaffinity=\"0\"/>";
+        }
+        xml += "</body>";
+    }
+    xml += "</worldbody></mujoco>";
+    let model = crate::api::Model::from_xml_str(&xml).unwrap();
+    let mut data = model.make_data().unwrap();
+    let (nq, qpos0) = (model.raw().nq as usize, data.qpos().to_vec());
+    let mut uniform = uniform(4242);
+    let mut listed = 0;
+    for k in 0..300 {
+        let spread = 0.2 + 3.0 * ((k % 30) as f64 / 30.0);
+        let mut q: Vec<f64> = (0..nq)
+            .map(|i| qpos0[i] + spread * (uniform() - 0.5))
+            .collect();
+        // bodies 1 and 2 on the spot of body 0
+        for j in 1..3 {
+            let (a, b) = q.split_at_mut(7 * j);
+            b[..3].copy_from_slice(&a[..3]);
+        }
+        if k % 7 == 0 {
+            q[7 * (k % 40)] = f64::NAN;
+        }
+        let pairs = [false, true].map(|scalar| {
+            data.qpos_mut().copy_from_slice(&q);
+            SWEEP_ONLY.with(|f| f.set(true));
+            SCALAR_SWEEP.with(|f| f.set(scalar));
+            let found = data
+                .with_core(|m, d| {
+                    crate::engine::kinematics::kinematics(m, d)?;
+                    d.with_scratch(|d, a| {
+                        super::broadphase::broadphase(m, d, a).map(|p| p.to_vec())
+                    })
+                })
+                .unwrap();
+            SWEEP_ONLY.with(|f| f.set(false));
+            SCALAR_SWEEP.with(|f| f.set(false));
+            found
+        });
+        assert_eq!(pairs[0], pairs[1]);
+        listed += pairs[0].len();
+    }
+    // each pose lists the floor's 40 pairs and the swept ones
+    assert!(listed > 300 * 40 + 2000, "{listed} pairs");
 }
 
 /// The bounding-box test skips a pair only where its routine finds no contact: random pairs of
