@@ -365,7 +365,7 @@ pub fn broadphase<'a>(
 }
 
 /// Sweep along the first axis (f32 keys, as 2.2.2), pruning by the other two. `spare`:
-/// scratch for `sweep`, which takes over where it holds 6 slots per swept body.
+/// scratch for `sweep`, which takes over where it holds 4 slots per swept body.
 fn sweep_and_prune(
     m: &Model,
     d: &Data,
@@ -446,7 +446,7 @@ fn sweep_and_prune(
         }
     }
 
-    if spare.len() >= 6 * count && !scalar_sweep() {
+    if spare.len() >= 4 * count && !scalar_sweep() {
         return sweep(m, pairs, entries, active, &mut aabb[..], spare);
     }
     let mut nactive = 0;
@@ -476,10 +476,11 @@ fn sweep_and_prune(
 }
 
 /// The sweep over the sorted ends with the active bodies' bounds on axes 1 and 2 kept beside
-/// them, and the masks of those with one geom (`spare`: 6 slots per swept body): each new body
-/// meets the active ones four at a time with the same tests (NaN bounds overlap), and the
-/// pairs of two one-geom bodies whose masks do not match are left out (as `Pairs::add` does)
-/// from those masks. A body leaves the active list by swapping in the last one, its place found
+/// them (`spare`: 4 slots per swept body), and the masks of those with one geom (in the
+/// active list's second half, unused: one slot per swept body is enough): each new body
+/// meets the active ones four at a time with the same tests (NaN bounds overlap), the pairs of
+/// two one-geom bodies whose masks do not match left out in the same lanes (as `Pairs::add`
+/// does). A body leaves the active list by swapping in the last one, its place found
 /// in `aabb`'s slot for its lower bound on axis 0 (read already): the pairs come in another
 /// order, the same pairs (the list is sorted after).
 fn sweep(
@@ -491,23 +492,30 @@ fn sweep(
     spare: &mut [f64],
 ) -> Result<(), EngineError> {
     const MAX: u64 = 0x10000;
-    let n = spare.len() / 6;
+    let n = spare.len() / 4;
     let (lo1, rest) = spare.split_at_mut(n);
     let (hi1, rest) = rest.split_at_mut(n);
-    let (lo2, rest) = rest.split_at_mut(n);
-    let (hi2, rest) = rest.split_at_mut(n);
-    let (contype, conaffinity) = rest.split_at_mut(n);
-    // a body's masks if it has one geom, else NaN (no filter)
+    let (lo2, hi2) = rest.split_at_mut(n);
+    // the active list's second half holds the masks, contype in the upper 32 bits
+    let (active, masks_of) = active.split_at_mut(active.len() / 2);
+    // a body's masks if it has one geom, else all bits (no filter: a swept body's masks are
+    // not both 0, so they meet all bits)
     let masks = |b: usize| match m.body_geomnum()[b] {
         1 => {
             let g = m.body_geomadr()[b] as usize;
-            (m.geom_contype()[g] as f64, m.geom_conaffinity()[g] as f64)
+            (m.geom_contype()[g], m.geom_conaffinity()[g])
         }
-        _ => (f64::NAN, f64::NAN),
+        _ => (-1, -1),
     };
+    // when every two swept bodies' masks meet, no pair is left out for them
+    let (mut all_t, mut all_a) = (-1, -1);
     for &e in entries {
-        aabb[6 * (e & 0xFFFF) as usize] = -1.0;
+        let b = (e & 0xFFFF) as usize;
+        aabb[6 * b] = -1.0;
+        let (t, a) = masks(b);
+        (all_t, all_a) = (all_t & t, all_a & a);
     }
+    let filter = all_t & all_a == 0;
     let mut nactive = 0;
     for &e in entries {
         let e = e & 0xFFFF_FFFF;
@@ -519,39 +527,58 @@ fn sweep(
                 aabb[6 * b + 4],
                 aabb[6 * b + 5],
             ];
+            let (ct, ca) = masks(b);
             let near =
                 |k: usize| !((lo1[k] > q[1]) | (hi1[k] < q[0]) | (lo2[k] > q[3]) | (hi2[k] < q[2]));
-            let (ct, ca) = masks(b);
-            for base in (0..nactive).step_by(4) {
-                let mut hits = 0u32;
-                for k in 0..4 {
-                    hits |= u32::from(near((base + k).min(nactive - 1))) << k;
-                }
-                hits &= (1u32 << (nactive - base).min(4)) - 1;
-                while hits != 0 {
-                    let k = base + hits.trailing_zeros() as usize;
-                    hits &= hits - 1;
-                    let (ct1, ca1) = (contype[k], conaffinity[k]);
-                    let single = !ct.is_nan() && !ct1.is_nan();
-                    if single && (ct1 as i32 & ca as i32) == 0 && (ct as i32 & ca1 as i32) == 0 {
-                        continue;
-                    }
-                    pairs.add(m, false, active[k] as usize, b)?;
-                }
+            let listed = &active[..nactive];
+            if filter {
+                let meet = |k: usize| {
+                    let mk = masks_of[k];
+                    (((mk >> 32) as i32 & ca) | (ct & mk as i32)) != 0
+                };
+                add_passing(m, pairs, listed, b, |k| near(k) & meet(k))?;
+            } else {
+                add_passing(m, pairs, listed, b, near)?;
             }
             active[nactive] = b as u64;
             (lo1[nactive], hi1[nactive], lo2[nactive], hi2[nactive]) = (q[0], q[1], q[2], q[3]);
-            (contype[nactive], conaffinity[nactive]) = (ct, ca);
+            masks_of[nactive] = (u64::from(ct as u32) << 32) | u64::from(ca as u32);
             aabb[6 * b] = nactive as f64;
             nactive += 1;
         } else if aabb[6 * b] >= 0.0 {
             let (k, last) = (aabb[6 * b] as usize, nactive - 1);
             active[k] = active[last];
             (lo1[k], hi1[k], lo2[k], hi2[k]) = (lo1[last], hi1[last], lo2[last], hi2[last]);
-            (contype[k], conaffinity[k]) = (contype[last], conaffinity[last]);
+            masks_of[k] = masks_of[last];
             aabb[6 * active[k] as usize] = k as f64;
             aabb[6 * b] = -1.0;
             nactive -= 1;
+        }
+    }
+    Ok(())
+}
+
+/// Adds the pairs of body b with the active bodies that `pass` lets through (by their place),
+/// testing four at a time.
+#[inline(always)]
+fn add_passing(
+    m: &Model,
+    pairs: &mut Pairs,
+    active: &[u64],
+    b: usize,
+    pass: impl Fn(usize) -> bool,
+) -> Result<(), EngineError> {
+    let n = active.len();
+    for base in (0..n).step_by(4) {
+        let mut hits = 0u32;
+        for k in 0..4 {
+            hits |= u32::from(pass((base + k).min(n - 1))) << k;
+        }
+        hits &= (1u32 << (n - base).min(4)) - 1;
+        while hits != 0 {
+            let k = base + hits.trailing_zeros() as usize;
+            hits &= hits - 1;
+            pairs.add(m, false, active[k] as usize, b)?;
         }
     }
     Ok(())

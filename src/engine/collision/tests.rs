@@ -423,11 +423,18 @@ fn frameless_broadphase_gives_the_sweeps_contacts() {
 
 /// The sweep that meets the active bodies four at a time (their bounds and masks beside the
 /// list) gives the pair list of the one at a time: random poses of 40 free bodies, of one geom
-/// or two, of several masks, packed from overlapping to apart, some on the same spot (equal
-/// keys), some with NaN positions (the merge sort's order, bodies whose upper end comes first).
+/// or two, of several masks (and of masks that all meet), packed from overlapping to apart,
+/// some on the same spot (equal keys), some with NaN positions (the merge sort's order, bodies
+/// whose upper end comes first).
 #[test]
 fn sweep_four_at_a_time_gives_the_pairs_of_one_at_a_time() {
-    let masks = [(0, 1), (1, 1), (1, 0), (2, 2), (1, 2), (3, 1)];
+    let mixed = [(0, 1), (1, 1), (1, 0), (2, 2), (1, 2), (3, 1)];
+    for masks in [&mixed[..], &[(1, 1), (3, 1)]] {
+        sweep_both_ways(masks);
+    }
+}
+
+fn sweep_both_ways(masks: &[(i32, i32)]) {
     let mut xml = String::from("<mujoco><worldbody><geom type=\"plane\" size=\"5 5 .1\"/>");
     for b in 0..40 {
         let (t, a) = masks[b % masks.len()];
