@@ -446,7 +446,10 @@ fn sweep_and_prune(
         }
     }
 
-    if spare.len() >= 4 * count && !scalar_sweep() {
+    // the buffer cannot fill before the last of the swept pairs, so no pair left out by its
+    // masks (never added) would have met it full ("Broadphase buffer full")
+    let room = pairs.n + count * (count - 1) / 2 <= pairs.pair.len();
+    if room && spare.len() >= 4 * count && !scalar_sweep() {
         return sweep(m, pairs, entries, active, &mut aabb[..], spare);
     }
     let mut nactive = 0;
