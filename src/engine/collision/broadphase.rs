@@ -41,6 +41,18 @@ fn has_plane_or_hfield(m: &Model, b: usize) -> bool {
     })
 }
 
+/// A body's (contype, conaffinity) in one slot, contype in the upper 32 bits.
+fn pack_masks((t, a): (i32, i32)) -> u64 {
+    (u64::from(t as u32) << 32) | u64::from(a as u32)
+}
+
+fn unpack_masks(k: u64) -> (i32, i32) {
+    ((k >> 32) as u32 as i32, k as u32 as i32)
+}
+
+/// Marks the upper end of a body's box in the sweep's records (the body below it).
+const UPPER: u64 = 0x10000;
+
 /// The pair list under construction (capacity nbody*(nbody-1)/2, as 2.2.2's buffer).
 struct Pairs<'a> {
     pair: &'a mut [i32],
@@ -235,10 +247,9 @@ fn pairs_without_frame(
             return Ok(false);
         }
         bodies[n] = b as u64;
-        masks[n] = (u64::from(t as u32) << 32) | u64::from(a as u32);
+        masks[n] = pack_masks((t, a));
         n += 1;
     }
-    let unpack = |k: u64| ((k >> 32) as u32 as i32, k as u32 as i32);
     let mut sphere = [None; MAX_FRAMELESS_BODIES];
     for (s, &b) in sphere.iter_mut().zip(&bodies[..n]) {
         *s = body_sphere(m, d, b as usize);
@@ -246,10 +257,10 @@ fn pairs_without_frame(
     let start = pairs.n;
     let mut tests = 0;
     for i in 0..n {
-        let (b1, masks1) = (bodies[i] as usize, unpack(masks[i]));
+        let (b1, masks1) = (bodies[i] as usize, unpack_masks(masks[i]));
         for j in i + 1..n {
             let b2 = bodies[j] as usize;
-            if !can_pair(masks1, unpack(masks[j]))
+            if !can_pair(masks1, unpack_masks(masks[j]))
                 || welds_filtered(m, m.body_weldid()[b1], m.body_weldid()[b2])
             {
                 continue;
@@ -386,8 +397,7 @@ fn sweep_and_prune(
     if count == 0 {
         return Ok(());
     }
-    const MAX: u64 = 0x10000;
-    // 2.2.2's mjtBroadphase in one stack slot each: the body (+MAX for a box's upper end) in the
+    // 2.2.2's mjtBroadphase in one stack slot each: the body (+UPPER for a box's upper end) in the
     // low 32 bits, its f32 bound on axis 0 in the high ones; 2*count slots for the sorted list
     // and 2*count for the active list (which also serves as the merge sort's buffer)
     let entries = a.alloc_u64_stale(2 * count)?;
@@ -415,7 +425,7 @@ fn sweep_and_prune(
     for (j, b) in (1..nbody).filter(|&b| can_collide(m, b)).enumerate() {
         let (lo, hi) = (aabb[6 * b] as f32, aabb[6 * b + 1] as f32);
         entries[2 * j] = (u64::from(lo.to_bits()) << 32) | b as u64;
-        entries[2 * j + 1] = (u64::from(hi.to_bits()) << 32) | (b as u64 + MAX);
+        entries[2 * j + 1] = (u64::from(hi.to_bits()) << 32) | (b as u64 + UPPER);
     }
     let key = |e: &u64| -> f32 { f32::from_bits((e >> 32) as u32) };
     let ismax = |e: u64| e & 0xFFFF_FFFF;
@@ -426,7 +436,7 @@ fn sweep_and_prune(
         merge_sort(entries, active, &|x, y| key(x) <= key(y));
     } else {
         // as integers: the key's order-preserving bits (-0 as +0, they compare equal), then
-        // the body, then the upper end after the lower; back to the body (+MAX) once sorted
+        // the body, then the upper end after the lower; back to the body (+UPPER) once sorted
         for e in entries.iter_mut() {
             let bits = match (*e >> 32) as u32 {
                 0x8000_0000 => 0,
@@ -442,7 +452,7 @@ fn sweep_and_prune(
         }
         entries.sort_unstable();
         for e in entries.iter_mut() {
-            *e = ((*e & 0xFFFF_FFFF) >> 1) + (*e & 1) * MAX;
+            *e = ((*e & 0xFFFF_FFFF) >> 1) + (*e & 1) * UPPER;
         }
     }
 
@@ -455,7 +465,7 @@ fn sweep_and_prune(
     let mut nactive = 0;
     for &e in entries.iter() {
         let e = ismax(e);
-        if e & MAX == 0 {
+        if e & UPPER == 0 {
             let b2 = e as usize;
             for &b1 in &active[..nactive] {
                 let b1 = b1 as usize;
@@ -494,12 +504,11 @@ fn sweep(
     aabb: &mut [f64],
     spare: &mut [f64],
 ) -> Result<(), EngineError> {
-    const MAX: u64 = 0x10000;
     let n = spare.len() / 4;
     let (lo1, rest) = spare.split_at_mut(n);
     let (hi1, rest) = rest.split_at_mut(n);
     let (lo2, hi2) = rest.split_at_mut(n);
-    // the active list's second half holds the masks, contype in the upper 32 bits
+    // the active list's second half holds the masks (`pack_masks`)
     let (active, masks_of) = active.split_at_mut(active.len() / 2);
     // a body's masks if it has one geom, else all bits (no filter: a swept body's masks are
     // not both 0, so they meet all bits)
@@ -523,7 +532,7 @@ fn sweep(
     for &e in entries {
         let e = e & 0xFFFF_FFFF;
         let b = (e & 0xFFFF) as usize;
-        if e & MAX == 0 {
+        if e & UPPER == 0 {
             let q = [
                 aabb[6 * b + 2],
                 aabb[6 * b + 3],
@@ -535,17 +544,14 @@ fn sweep(
                 |k: usize| !((lo1[k] > q[1]) | (hi1[k] < q[0]) | (lo2[k] > q[3]) | (hi2[k] < q[2]));
             let listed = &active[..nactive];
             if filter {
-                let meet = |k: usize| {
-                    let mk = masks_of[k];
-                    (((mk >> 32) as i32 & ca) | (ct & mk as i32)) != 0
-                };
+                let meet = |k: usize| can_pair(unpack_masks(masks_of[k]), (ct, ca));
                 add_passing(m, pairs, listed, b, |k| near(k) & meet(k))?;
             } else {
                 add_passing(m, pairs, listed, b, near)?;
             }
             active[nactive] = b as u64;
             (lo1[nactive], hi1[nactive], lo2[nactive], hi2[nactive]) = (q[0], q[1], q[2], q[3]);
-            masks_of[nactive] = (u64::from(ct as u32) << 32) | u64::from(ca as u32);
+            masks_of[nactive] = pack_masks((ct, ca));
             aabb[6 * b] = nactive as f64;
             nactive += 1;
         } else if aabb[6 * b] >= 0.0 {
