@@ -1055,17 +1055,20 @@ pub fn constraint_update(
             i += dim;
             continue;
         }
-        // chosen without branches (states flip between iterations and mispredict)
-        let satisfied = jar[i] >= 0.0;
-        force[i] = if satisfied { 0.0 } else { force[i] };
-        state[i] = if satisfied {
-            mjCNSTRSTATE_SATISFIED as i32
-        } else {
+        // chosen by bit masks, without branches (states flip between iterations and
+        // mispredict): a satisfied row's force is +0 and its cost term -0, which adds nothing
+        // (NaN: quadratic)
+        let quadratic = jar[i] < 0.0 || jar[i].is_nan();
+        let keep = (quadratic as u64).wrapping_neg();
+        force[i] = f64::from_bits(force[i].to_bits() & keep);
+        state[i] = if quadratic {
             mjCNSTRSTATE_QUADRATIC as i32
+        } else {
+            mjCNSTRSTATE_SATISFIED as i32
         };
         if want_cost {
-            let sum = s + 0.5 * dd[i] * jar[i] * jar[i];
-            s = if satisfied { s } else { sum };
+            let term = (0.5 * dd[i] * jar[i] * jar[i]).to_bits();
+            s += f64::from_bits((term & keep) | ((-0.0f64).to_bits() & !keep));
         }
         i += 1;
     }

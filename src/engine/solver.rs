@@ -405,6 +405,8 @@ struct Ctx<'b> {
     nupdate: i32,
     ls_iter: i32,
     ls_slope: f64,
+    /// some row past the frictions is an elliptic cone's (set by `prepare`)
+    elliptic: bool,
 }
 
 /// A line-search point: step, cost and its first two derivatives.
@@ -473,6 +475,7 @@ fn prepare(m: &Model, d: &Data, c: &mut Ctx) {
     let v = &*c.search;
     c.quad_gauss[1] = dot(v, c.ma, nv) - dot(v, d.qfrc_smooth, nv);
     c.quad_gauss[2] = 0.5 * dot(v, c.mv, nv);
+    c.elliptic = false;
     let mut i = 0;
     while i < nefc {
         let (jv, jaref, dd) = (c.jv[i], c.jaref[i], d.efc_D[i]);
@@ -506,6 +509,7 @@ fn prepare(m: &Model, d: &Data, c: &mut Ctx) {
             let dm = dd / (mu * mu * (1.0 + mu * mu));
             c.quad[3 * i + 3..3 * i + 9].copy_from_slice(&[u[0], v[0], uu, uv, vv, dm]);
             next = i + dim;
+            c.elliptic = true;
         }
         q[0] *= 0.5;
         q[2] *= 0.5;
@@ -543,10 +547,13 @@ fn eval(d: &Data, c: &mut Ctx, p: &mut Pnt) {
     }
     let (mut cost, mut d0, mut d1) = (0.0, 0.0, 0.0);
     let mut i = ne + nf;
+    if !c.elliptic {
+        add_active(&mut total, c.quad, c.jaref, c.jv, alpha, i..nefc);
+        i = nefc;
+    }
     while i < nefc {
         if d.efc_type[i] != ELLIPTIC {
-            // active rows add their quadratic; chosen without a branch (the sign of x changes
-            // along the line search and mispredicts), the same sums
+            // among elliptic cones: active rows add their quadratic, chosen by a select
             let active = c.jaref[i] + alpha * c.jv[i] < 0.0;
             let q = &c.quad[3 * i..3 * i + 3];
             for k in 0..3 {
@@ -593,6 +600,34 @@ fn eval(d: &Data, c: &mut Ctx, p: &mut Pnt) {
     p.cost = cost;
     p.deriv = [d0, d1];
     c.ls_iter += 1;
+}
+
+/// total += the quadratics (`quad`, three a row) of the rows in `rows` active at alpha
+/// (Jaref + alpha*Jv < 0), in order. The active rows of 64 are found first, so that the sums
+/// skip the others without a branch on each (their signs change along the search and would
+/// mispredict).
+fn add_active(
+    total: &mut [f64; 3],
+    quad: &[f64],
+    jaref: &[f64],
+    jv: &[f64],
+    alpha: f64,
+    rows: std::ops::Range<usize>,
+) {
+    let mut i = rows.start;
+    while i < rows.end {
+        let n = (rows.end - i).min(64);
+        let mut active = 0u64;
+        for (k, (a, v)) in jaref[i..i + n].iter().zip(&jv[i..i + n]).enumerate() {
+            active |= ((a + alpha * v < 0.0) as u64) << k;
+        }
+        while active != 0 {
+            let k = i + active.trailing_zeros() as usize;
+            add_to3(total, &quad[3 * k..3 * k + 3]);
+            active &= active - 1;
+        }
+        i += n;
+    }
 }
 
 /// Replaces p by a better candidate on the same side of the minimum; evaluates its Newton step.
@@ -1040,6 +1075,7 @@ fn cg_newton(
         nupdate: 0,
         ls_iter: 0,
         ls_slope: 1.0,
+        elliptic: false,
     };
     // CG's previous gradients (2.2.2 also takes nv for their difference)
     let ncg = if newton { 0 } else { nv };
@@ -1123,4 +1159,44 @@ fn cg_newton(
         (true, false) => (nv * nv) as i32,
     };
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// add_active adds the same rows in the same order as a test of each row in turn: random
+    /// rows across several blocks of 64, signs that flip with alpha, NaN and zero steps, a
+    /// total starting at -0.
+    #[test]
+    fn active_rows_summed_as_row_by_row() {
+        let mut rng = crate::math::tests::uniform(5);
+        for trial in 0..300 {
+            let n = trial % 200;
+            let pick = |rng: &mut dyn FnMut() -> f64| match (rng() * 20.0) as i32 {
+                0 => f64::NAN,
+                1 => 0.0,
+                2 => -0.0,
+                _ => rng() - 0.5,
+            };
+            let jaref: Vec<f64> = (0..n).map(|_| pick(&mut rng)).collect();
+            let jv: Vec<f64> = (0..n).map(|_| pick(&mut rng)).collect();
+            let quad: Vec<f64> = (0..3 * n).map(|_| (rng() - 0.5) * 1e3).collect();
+            let alpha = [0.0, rng(), -rng(), 1e300][trial % 4];
+            let start = if n > 0 { trial % n } else { 0 };
+            let mut want = [-0.0, 0.25, -0.0];
+            for i in start..n {
+                if jaref[i] + alpha * jv[i] < 0.0 {
+                    add_to3(&mut want, &quad[3 * i..]);
+                }
+            }
+            let mut got = [-0.0, 0.25, -0.0];
+            add_active(&mut got, &quad, &jaref, &jv, alpha, start..n);
+            assert_eq!(
+                got.map(f64::to_bits),
+                want.map(f64::to_bits),
+                "trial {trial}"
+            );
+        }
+    }
 }

@@ -298,7 +298,10 @@ pub fn chol_solve_sparse(
     chol_solve_sparse_in_place(res, mat, n, rownnz, rowadr, colind);
 }
 
-/// In-place form of `chol_solve_sparse`.
+/// In-place form of `chol_solve_sparse`. Where the rows split into two blocks that share no
+/// column (no row past the split reaches before it: separate trees of the factor), the two run
+/// side by side, a row of each in turn, so that their chains of divisions overlap; each value
+/// takes its updates in the same order as one pass over all rows.
 pub fn chol_solve_sparse_in_place(
     res: &mut [f64],
     mat: &[f64],
@@ -307,27 +310,84 @@ pub fn chol_solve_sparse_in_place(
     rowadr: &[i32],
     colind: &[i32],
 ) {
-    for i in (0..n).rev() {
+    let split = independent_split(n, rownnz, rowadr, colind);
+    let f = Factor {
+        mat,
+        rownnz,
+        rowadr,
+        colind,
+    };
+    let (lo, hi) = (split, n - split);
+    for k in 1..=hi {
+        if k <= lo {
+            f.back(res, lo - k);
+        }
+        f.back(res, n - k);
+    }
+    for k in 0..hi {
+        if k < lo {
+            f.fore(res, k);
+        }
+        f.fore(res, split + k);
+    }
+}
+
+/// A sparse factor's rows, the diagonal last in each.
+struct Factor<'a> {
+    mat: &'a [f64],
+    rownnz: &'a [i32],
+    rowadr: &'a [i32],
+    colind: &'a [i32],
+}
+
+impl Factor<'_> {
+    #[inline(always)]
+    fn row(&self, i: usize) -> (&[f64], &[i32]) {
+        let (adr, nnz) = (u(self.rowadr[i]), u(self.rownnz[i]));
+        (&self.mat[adr..adr + nnz], &self.colind[adr..adr + nnz - 1])
+    }
+
+    /// Row i of x <- L'^-1 x (rows from the last): x_i divided, then scattered into its columns.
+    #[inline(always)]
+    fn back(&self, res: &mut [f64], i: usize) {
         if res[i] != 0.0 {
-            let (adr, nnz) = (u(rowadr[i]), u(rownnz[i]));
-            res[i] /= mat[adr + nnz - 1];
+            let (l, cols) = self.row(i);
+            res[i] /= l[l.len() - 1];
             let t = res[i];
-            for (&c, &l) in colind[adr..adr + nnz - 1]
-                .iter()
-                .zip(&mat[adr..adr + nnz - 1])
-            {
-                res[u(c)] -= l * t;
+            for (&c, &v) in cols.iter().zip(l) {
+                res[u(c)] -= v * t;
             }
         }
     }
-    for i in 0..n {
-        let (adr, nnz) = (u(rowadr[i]), u(rownnz[i]));
-        if nnz > 1 {
-            let s = dot_sparse(&mat[adr..adr + nnz], res, nnz - 1, &colind[adr..adr + nnz]);
+
+    /// Row i of x <- L^-1 x (rows from the first): its columns gathered, then the division.
+    #[inline(always)]
+    fn fore(&self, res: &mut [f64], i: usize) {
+        let (l, cols) = self.row(i);
+        if !cols.is_empty() {
+            let s = dot_sparse(l, res, cols.len(), cols);
             res[i] -= s;
         }
-        res[i] /= mat[adr + nnz - 1];
+        res[i] /= l[l.len() - 1];
     }
+}
+
+/// The row nearest n/2, at or below it, before which no later row has a column (0: none).
+fn independent_split(n: usize, rownnz: &[i32], rowadr: &[i32], colind: &[i32]) -> usize {
+    let mut first = n;
+    for i in (1..n).rev() {
+        // a row's columns ascend; its first is the smallest
+        let c = if rownnz[i] > 1 {
+            u(colind[u(rowadr[i])])
+        } else {
+            i
+        };
+        first = first.min(c);
+        if i <= n / 2 && first >= i {
+            return i;
+        }
+    }
+    0
 }
 
 /// Rank-one update L'*L +/- x*x' of the factor, x sparse (x_nnz values at x_ind, both

@@ -1066,3 +1066,73 @@ fn sqr_pattern_of_completed_chains_merges_only_tree_roots() {
         assert!(all.0.iter().zip(&nnz).all(|(&p, &n)| (p > 0) == (n > 0)));
     }
 }
+
+/// The sparse Cholesky solve, which runs two blocks of rows side by side where they share no
+/// column, gives the solve of one pass over the rows bit for bit: factors of random forests
+/// (trees joined across the middle or not, zeros in the right side).
+#[test]
+fn sparse_cholesky_solve_in_two_blocks_as_in_one_pass() {
+    use super::chol_sparse::*;
+    use super::sparse::dot_sparse;
+    let mut rng = uniform(23);
+    let mut splits = 0;
+    for trial in 0..400 {
+        let n = 1 + trial % 41;
+        // a row's columns: its ancestors in a random forest, whose trees are contiguous
+        let (mut mat, mut colind, mut rownnz, mut rowadr) = (vec![], vec![], vec![], vec![]);
+        let parent: Vec<i64> = (0..n)
+            .map(|r: usize| {
+                if r == 0 || rng() >= 0.8 {
+                    return -1;
+                }
+                // joined to an earlier row, sometimes across all of them
+                let lo = if rng() < 0.2 { 0 } else { r.saturating_sub(4) };
+                (lo + ((r - lo) as f64 * rng()) as usize) as i64
+            })
+            .collect();
+        for r in 0..n {
+            let mut cols = vec![];
+            let mut j = parent[r];
+            while j >= 0 {
+                cols.push(j as i32);
+                j = parent[j as usize];
+            }
+            cols.sort();
+            rowadr.push(colind.len() as i32);
+            rownnz.push(cols.len() as i32 + 1);
+            for &c in &cols {
+                colind.push(c);
+                mat.push(rng() - 0.5);
+            }
+            colind.push(r as i32);
+            mat.push(1.0 + 3.0 * rng());
+        }
+        let b: Vec<f64> = (0..n)
+            .map(|_| if rng() < 0.2 { 0.0 } else { rng() - 0.5 })
+            .collect();
+        // one pass: L' from the last row, then L from the first
+        let mut want = b.clone();
+        for i in (0..n).rev() {
+            let (adr, nnz) = (rowadr[i] as usize, rownnz[i] as usize);
+            if want[i] != 0.0 {
+                want[i] /= mat[adr + nnz - 1];
+                for k in adr..adr + nnz - 1 {
+                    want[colind[k] as usize] -= mat[k] * want[i];
+                }
+            }
+        }
+        for i in 0..n {
+            let (adr, nnz) = (rowadr[i] as usize, rownnz[i] as usize);
+            if nnz > 1 {
+                want[i] -= dot_sparse(&mat[adr..], &want, nnz - 1, &colind[adr..]);
+            }
+            want[i] /= mat[adr + nnz - 1];
+        }
+        let mut got = vec![0.0; n];
+        chol_solve_sparse(&mut got, &mat, &b, n, &rownnz, &rowadr, &colind);
+        let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+        assert_eq!(bits(&got), bits(&want), "trial {trial}");
+        splits += (1..n).any(|s| (s..n).all(|r| parent[r] < 0 || parent[r] >= s as i64)) as usize;
+    }
+    assert!(splits > 100, "{splits} forests with two blocks");
+}
