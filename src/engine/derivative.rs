@@ -716,11 +716,100 @@ pub fn passive_vel(m: &Model, d: &mut Data, dfdv: &mut [f64]) -> Result<(), Engi
 
 // ---------------------------------------------------------------- bias forces (RNE)
 
+/// Columns `lo..hi` of a body's derivative blocks that can be nonzero: its dofs and its
+/// ancestors' (dofs lie in depth-first order, so those in between are zeros). Everything else
+/// in the blocks is +0, as 2.2.2's full-width products leave it while their factors are
+/// finite; from the first that is not (`wide`), the products run over the whole width.
+#[derive(Clone, Copy)]
+struct Cols {
+    lo: usize,
+    hi: usize,
+}
+
+impl Cols {
+    /// The columns of body i's blocks once all its dofs are in: from its topmost ancestor
+    /// with dofs to its own last one (an empty range for a body with none on its path).
+    fn of(m: &Model, i: usize) -> Cols {
+        let (parent, adr, num) = (m.body_parentid(), m.body_dofadr(), m.body_dofnum());
+        let (mut lo, mut hi) = (usize::MAX, 0);
+        let mut b = i;
+        while b > 0 {
+            if num[b] > 0 {
+                lo = adr[b] as usize;
+                hi = hi.max(lo + num[b] as usize);
+            }
+            b = parent[b] as usize;
+        }
+        Cols { lo: lo.min(hi), hi }
+    }
+}
+
+/// res (6 x nv) = mat (6 x 6) * src (6 x nv) as mul_mat_mat computes it (each element's terms
+/// in order, zeros of mat skipped), over the columns `cols` while mat is finite (elsewhere the
+/// terms are zeros: the result there is +0), else (and from then on: `wide`) over all.
+fn times6(res: &mut [f64], mat: &[f64; 36], src: &[f64], nv: usize, cols: Cols, wide: &mut bool) {
+    // an exponent of all ones: infinite or NaN
+    const EXP: u64 = 0x7ff0_0000_0000_0000;
+    *wide |= mat
+        .iter()
+        .fold(false, |a, x| a | (x.to_bits() & EXP == EXP));
+    if *wide {
+        mul_mat_mat(res, mat, src, 6, 6, nv);
+        return;
+    }
+    res[..6 * nv].fill(0.0);
+    let Cols { lo, hi } = cols;
+    let mut c = lo;
+    while c + 4 <= hi {
+        times6_cols::<4>(res, mat, src, nv, c);
+        c += 4;
+    }
+    if c + 2 <= hi {
+        times6_cols::<2>(res, mat, src, nv, c);
+        c += 2;
+    }
+    if c < hi {
+        times6_cols::<1>(res, mat, src, nv, c);
+    }
+}
+
+/// row[c..c+W] += src[k][c..c+W] * s[k] for k = 0..6 in turn (src: 6 rows of nv), the sums
+/// held in registers.
+#[inline(always)]
+fn sub_rows<const W: usize>(row: &mut [f64], src: &[f64], s: &[f64; 6], nv: usize, c: usize) {
+    let mut acc: [f64; W] = row[c..c + W].try_into().unwrap();
+    for k in 0..6 {
+        for q in 0..W {
+            acc[q] += src[k * nv + c + q] * s[k];
+        }
+    }
+    row[c..c + W].copy_from_slice(&acc);
+}
+
+/// Columns c..c+W of `times6`, each row's sums held in registers over k.
+#[inline(always)]
+fn times6_cols<const W: usize>(res: &mut [f64], mat: &[f64; 36], src: &[f64], nv: usize, c: usize) {
+    let v: [[f64; W]; 6] =
+        std::array::from_fn(|k| src[k * nv + c..k * nv + c + W].try_into().unwrap());
+    for i in 0..6 {
+        let mut acc = [0.0; W];
+        for k in 0..6 {
+            let s = mat[i * 6 + k];
+            if s != 0.0 {
+                for q in 0..W {
+                    acc[q] += v[k][q] * s;
+                }
+            }
+        }
+        res[i * nv + c..i * nv + c + W].copy_from_slice(&acc);
+    }
+}
+
 /// Derivatives of cvel (nbody x 6 x nv) and cdof_dot (nv x 6 x nv) with respect to qvel.
-fn com_vel_vel(m: &Model, d: &Data, dcvel: &mut [f64], dcdofdot: &mut [f64]) {
+/// Only the world's block of dcvel need be zero on entry; every other is written.
+fn com_vel_vel(m: &Model, d: &Data, dcvel: &mut [f64], dcdofdot: &mut [f64], wide: &mut bool) {
     let nv = m.raw.nv as usize;
     let blk = 6 * nv;
-    dcvel.fill(0.0);
     let add_cdof = |dcvel: &mut [f64], i: usize, j: usize, n: usize| {
         for k in 0..6 {
             for q in 0..n {
@@ -733,6 +822,14 @@ fn com_vel_vel(m: &Model, d: &Data, dcvel: &mut [f64], dcdofdot: &mut [f64]) {
         dcvel.copy_within(p * blk..(p + 1) * blk, i * blk);
         let start = m.body_dofadr()[i].max(0) as usize;
         let end = start + m.body_dofnum()[i] as usize;
+        // the columns so far: the parent's, then each dof's as it comes in
+        let mut cols = Cols::of(m, p);
+        let take = |cols: &mut Cols, j: usize, n: usize| {
+            *cols = Cols {
+                lo: if cols.hi > cols.lo { cols.lo } else { j },
+                hi: j + n,
+            };
+        };
         let mut j = start;
         while j < end {
             let t = m.jnt_type()[m.dof_jntid()[j] as usize];
@@ -740,36 +837,37 @@ fn com_vel_vel(m: &Model, d: &Data, dcvel: &mut [f64], dcdofdot: &mut [f64]) {
                 if t == JNT_FREE {
                     dcdofdot[j * blk..(j + 3) * blk].fill(0.0);
                     add_cdof(dcvel, i, j, 3);
+                    take(&mut cols, j, 3);
                     j += 3;
                 }
                 for k in 0..3 {
                     let mat = d_cross_motion_vel(&d.cdof[6 * (j + k)..]);
-                    mul_mat_mat(
-                        &mut dcdofdot[(j + k) * blk..(j + k + 1) * blk],
-                        &mat,
-                        &dcvel[i * blk..(i + 1) * blk],
-                        6,
-                        6,
-                        nv,
-                    );
+                    let src = &dcvel[i * blk..(i + 1) * blk];
+                    times6(&mut dcdofdot[(j + k) * blk..], &mat, src, nv, cols, wide);
                 }
                 add_cdof(dcvel, i, j, 3);
+                take(&mut cols, j, 3);
                 j += 3;
             } else {
                 let mat = d_cross_motion_vel(&d.cdof[6 * j..]);
-                mul_mat_mat(
-                    &mut dcdofdot[j * blk..(j + 1) * blk],
-                    &mat,
-                    &dcvel[i * blk..(i + 1) * blk],
-                    6,
-                    6,
-                    nv,
-                );
+                let src = &dcvel[i * blk..(i + 1) * blk];
+                times6(&mut dcdofdot[j * blk..], &mat, src, nv, cols, wide);
                 add_cdof(dcvel, i, j, 1);
+                take(&mut cols, j, 1);
                 j += 1;
             }
         }
     }
+}
+
+#[cfg(not(test))]
+fn full_width() -> bool {
+    false
+}
+
+#[cfg(test)]
+fn full_width() -> bool {
+    tests::FULL_WIDTH.with(|f| f.get())
 }
 
 /// dfdv -= d qfrc_bias / d qvel.
@@ -781,14 +879,18 @@ fn rne_vel_in(m: &Model, d: &mut Data, a: &mut Arena, dfdv: &mut [f64]) -> Resul
     let nv = m.raw.nv as usize;
     let nbody = m.raw.nbody as usize;
     let blk = 6 * nv;
-    let dcvel = a.alloc(nbody * blk)?;
-    let dcdofdot = a.alloc(nv * blk)?;
-    let dcacc = a.alloc(nbody * blk)?;
-    let dcfrc = a.alloc(nbody * blk)?;
-    com_vel_vel(m, d, dcvel, dcdofdot);
-    dcacc.fill(0.0);
+    // every block is written before it is read (the world's zeroed here)
+    let dcvel = a.alloc_stale(nbody * blk)?;
+    let dcdofdot = a.alloc_stale(nv * blk)?;
+    let dcacc = a.alloc_stale(nbody * blk)?;
+    let dcfrc = a.alloc_stale(nbody * blk)?;
+    dcvel[..blk].fill(0.0);
+    dcacc[..blk].fill(0.0);
+    let mut wide = full_width();
+    com_vel_vel(m, d, dcvel, dcdofdot, &mut wide);
     for i in 1..nbody {
         let p = m.body_parentid()[i] as usize;
+        let cols = Cols::of(m, i);
         dcacc.copy_within(p * blk..(p + 1) * blk, i * blk);
         let acc = &mut dcacc[i * blk..(i + 1) * blk];
         let start = m.body_dofadr()[i].max(0) as usize;
@@ -796,25 +898,40 @@ fn rne_vel_in(m: &Model, d: &mut Data, a: &mut Arena, dfdv: &mut [f64]) -> Resul
             for k in 0..6 {
                 acc[k * nv + j] += d.cdof_dot[j * 6 + k];
             }
-            add_to_scl(acc, &dcdofdot[j * blk..(j + 1) * blk], d.qvel[j]);
+            // the terms past the columns are zeros while qvel is finite
+            wide |= !d.qvel[j].is_finite();
+            let (lo, hi) = if wide { (0, nv) } else { (cols.lo, cols.hi) };
+            for k in 0..6 {
+                let (r, src) = (k * nv + lo..k * nv + hi, &dcdofdot[j * blk..(j + 1) * blk]);
+                add_to_scl(&mut acc[r.clone()], &src[r], d.qvel[j]);
+            }
         }
 
         let cinert = &d.cinert[10 * i..10 * i + 10];
         let dmul = d_mul_inert_vec(cinert);
         let (head, rest) = dcfrc.split_at_mut(i * blk);
         let body = &mut rest[..blk];
-        mul_mat_mat(body, &dmul, acc, 6, 6, nv);
+        times6(body, &dmul, acc, nv, cols, &mut wide);
 
         let cvel = &d.cvel[6 * i..6 * i + 6];
         let tmp = mul_inert_vec(cinert, &v6(cvel));
         let mut mat = d_cross_force_vel(&tmp);
         let mat1 = d_cross_force_frc(cvel);
+        // mat1 * dmul, every column
         let mut mat2 = [0.0; 36];
-        mul_mat_mat(&mut mat2, &mat1, &dmul, 6, 6, 6);
+        times6_cols::<4>(&mut mat2, &mat1, &dmul, 6, 0);
+        times6_cols::<2>(&mut mat2, &mat1, &dmul, 6, 4);
         add_to(&mut mat, &mat2);
 
         let world = &mut head[..blk];
-        mul_mat_mat(world, &mat, &dcvel[i * blk..(i + 1) * blk], 6, 6, nv);
+        times6(
+            world,
+            &mat,
+            &dcvel[i * blk..(i + 1) * blk],
+            nv,
+            cols,
+            &mut wide,
+        );
         add_to(body, world);
     }
     dcfrc[..blk].fill(0.0);
@@ -825,15 +942,19 @@ fn rne_vel_in(m: &Model, d: &mut Data, a: &mut Arena, dfdv: &mut [f64]) -> Resul
             add_to(&mut head[p * blk..(p + 1) * blk], &rest[..blk]);
         }
     }
+    // dfdv row i -= the six rows of its body's dcfrc times cdof_i, each element's in order
     for i in 0..nv {
         let b = m.dof_bodyid()[i] as usize;
-        for k in 0..6 {
-            let r = (b * 6 + k) * nv;
-            add_to_scl(
-                &mut dfdv[i * nv..(i + 1) * nv],
-                &dcfrc[r..r + nv],
-                -d.cdof[i * 6 + k],
-            );
+        let frc = &dcfrc[b * blk..(b + 1) * blk];
+        let s: [f64; 6] = std::array::from_fn(|k| -d.cdof[i * 6 + k]);
+        let row = &mut dfdv[i * nv..(i + 1) * nv];
+        let mut c = 0;
+        while c + 4 <= nv {
+            sub_rows::<4>(row, frc, &s, nv, c);
+            c += 4;
+        }
+        for c in c..nv {
+            sub_rows::<1>(row, frc, &s, nv, c);
         }
     }
     Ok(())
@@ -1306,4 +1427,76 @@ pub fn transition_fd(
         transpose(dm, &dt, nu, ns);
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    thread_local! {
+        /// Set: the velocity derivatives of the bias forces over every column, as 2.2.2.
+        pub static FULL_WIDTH: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+    }
+
+    /// The velocity derivative of the bias forces over each body's own columns gives 2.2.2's
+    /// over every column, bit for bit: two trees (free, ball, hinge and slide joints, welded
+    /// bodies, branches) in random states, some with NaN or infinite velocities or positions.
+    #[test]
+    fn bias_derivative_over_ancestor_columns_as_over_all() {
+        let xml = r#"<mujoco><option integrator="implicit"/><worldbody>
+          <body><freejoint/><geom size=".1" mass="1"/>
+            <body pos=".2 0 0"><joint type="ball"/><geom size=".1" mass=".5"/>
+              <body pos=".2 0 0"><geom size=".05" mass=".2"/>
+                <body pos="0 .2 0"><joint axis="0 1 0"/><joint type="slide" axis="1 0 0"/>
+                  <geom size=".05" mass=".1"/></body></body></body>
+            <body pos="0 .3 0"><joint axis="1 0 0"/><geom size=".1" mass=".3"/>
+              <body pos="0 .2 0"><joint axis="0 0 1"/><geom size=".1" mass=".3"/></body></body>
+          </body>
+          <body pos="1 0 0"><joint axis="0 1 0"/><geom size=".1" mass="1"/>
+            <body pos=".2 0 0"><joint type="ball"/><geom size=".1" mass=".4"/></body></body>
+        </worldbody></mujoco>"#;
+        let model = crate::api::Model::from_xml_str(xml).unwrap();
+        let mut data = model.make_data().unwrap();
+        let (nq, nv) = (model.raw().nq as usize, model.raw().nv as usize);
+        let qpos0 = data.qpos().to_vec();
+        let mut uniform = crate::math::tests::uniform(99);
+        let mut odd = 0;
+        for k in 0..300 {
+            let mut q: Vec<f64> = (0..nq).map(|i| qpos0[i] + uniform() - 0.5).collect();
+            let mut v: Vec<f64> = (0..nv).map(|_| 4.0 * (uniform() - 0.5)).collect();
+            match k % 10 {
+                1 => v[k % nv] = f64::NAN,
+                2 => v[k % nv] = f64::INFINITY,
+                3 => q[k % nq] = f64::NAN,
+                4 => v[k % nv] = 0.0,
+                _ => {}
+            }
+            let derivs = [false, true].map(|full| {
+                data.qpos_mut().copy_from_slice(&q);
+                data.qvel_mut().copy_from_slice(&v);
+                FULL_WIDTH.with(|f| f.set(full));
+                let got = data
+                    .with_core(|m, d| {
+                        crate::engine::forward::fwd_position(m, d)?;
+                        crate::engine::forward::fwd_velocity(m, d)?;
+                        d.arena.scope(|a| {
+                            let scratch = a.alloc_int(nv)?;
+                            let (nnz, adr, ind) =
+                                (&mut *d.D_rownnz, &mut *d.D_rowadr, &mut *d.D_colind);
+                            crate::engine::integrate::make_m_sparse(m, nnz, adr, ind, scratch)
+                        })?;
+                        super::smooth_vel(m, d)?;
+                        let n = d.D_rownnz[..nv].iter().sum::<i32>() as usize;
+                        Ok(d.qDeriv[..n]
+                            .iter()
+                            .map(|x| x.to_bits())
+                            .collect::<Vec<_>>())
+                    })
+                    .unwrap();
+                FULL_WIDTH.with(|f| f.set(false));
+                got
+            });
+            assert_eq!(derivs[0], derivs[1], "state {k}");
+            odd += derivs[0].iter().any(|&x| !f64::from_bits(x).is_finite()) as usize;
+        }
+        assert!(odd > 30, "{odd} states with derivatives not finite");
+    }
 }
