@@ -553,12 +553,13 @@ fn eval(d: &Data, c: &mut Ctx, p: &mut Pnt) {
     }
     while i < nefc {
         if d.efc_type[i] != ELLIPTIC {
-            // among elliptic cones: active rows add their quadratic, chosen by a select
+            // among elliptic cones: an active row adds its quadratic, an inactive one -0
+            // (which adds nothing), chosen by a bit mask without a branch
             let active = c.jaref[i] + alpha * c.jv[i] < 0.0;
+            let keep = (active as u64).wrapping_neg();
             let q = &c.quad[3 * i..3 * i + 3];
             for k in 0..3 {
-                let sum = total[k] + q[k];
-                total[k] = if active { sum } else { total[k] };
+                total[k] += f64::from_bits((q[k].to_bits() & keep) | ((-0.0f64).to_bits() & !keep));
             }
             i += 1;
             continue;
@@ -953,8 +954,9 @@ fn hessian_incremental(
             // the sparse update's own scratch (2.2.2 takes it in each update, so only once a
             // row changes), released before the cone update
             let mut scratch: Option<(&mut [i32], &mut [f64])> = None;
-            // dense rows waiting to be paired (local arrays: 2.2.2's scratch is one vector)
-            let (mut first, mut second) = ([0.0; PAIRED_NV], [0.0; PAIRED_NV]);
+            // dense rows waiting to be paired (local arrays: 2.2.2's scratch is one vector),
+            // set up at the first changed row
+            let mut pair: Option<[[f64; PAIRED_NV]; 2]> = None;
             let mut pending: Option<bool> = None;
             for i in 0..nefc {
                 let (was, is) = (oldstate[i] == QUADRATIC, d.efc_state[i] == QUADRATIC);
@@ -980,10 +982,11 @@ fn hessian_incremental(
                     .map_err(|e| EngineError(e.into()))?
                 } else if nv <= PAIRED_NV {
                     // held until the next changed row, so that the two updates overlap
+                    let [first, second] = pair.get_or_insert([[0.0; PAIRED_NV]; 2]);
                     let slot = if pending.is_some() {
-                        &mut second
+                        &mut *second
                     } else {
-                        &mut first
+                        &mut *first
                     };
                     for k in 0..nv {
                         slot[k] = d.efc_J[i * nv + k] * s;
@@ -994,8 +997,7 @@ fn hessian_incremental(
                             continue;
                         }
                         Some(was_plus) => {
-                            let (r1, r2) =
-                                chol_update2(c.h, &mut first, was_plus, &mut second, is, nv);
+                            let (r1, r2) = chol_update2(c.h, first, was_plus, second, is, nv);
                             // a rank loss in the first discards the second with H (refactored)
                             c.nupdate += 1;
                             if r1 < nv {
@@ -1015,8 +1017,8 @@ fn hessian_incremental(
                     return Ok(true);
                 }
             }
-            if let Some(is) = pending {
-                let rank = chol_update(c.h, &mut first, nv, is);
+            if let (Some(is), Some([first, _])) = (pending, pair.as_mut()) {
+                let rank = chol_update(c.h, first, nv, is);
                 c.nupdate += 1;
                 if rank < nv {
                     return Ok(true);
