@@ -12,6 +12,7 @@ use super::{JNT_BALL, JNT_HINGE, JNT_SLIDE};
 use crate::abi::view::Arena;
 use crate::abi::*;
 use crate::math::blas::{add_to_scl, mul_mat_t_vec, mul_mat_vec, norm, sqr_mat_td, transpose};
+use crate::math::misc::kept_or_neg_zero;
 use crate::math::sparse::{
     combine_sparse, compress_sparse, mirror_lower_sparse, mul_mat_vec_sparse,
     sqr_mat_td_sparse_lower, super_sparse, transpose_sparse, SparseRef,
@@ -1056,8 +1057,7 @@ pub fn constraint_update(
             continue;
         }
         // chosen by bit masks, without branches (states flip between iterations and
-        // mispredict): a satisfied row's force is +0 and its cost term -0, which adds nothing
-        // (NaN: quadratic)
+        // mispredict): a satisfied row's force is +0 and its cost term -0 (NaN: quadratic)
         let quadratic = jar[i] < 0.0 || jar[i].is_nan();
         let keep = (quadratic as u64).wrapping_neg();
         force[i] = f64::from_bits(force[i].to_bits() & keep);
@@ -1067,8 +1067,7 @@ pub fn constraint_update(
             mjCNSTRSTATE_SATISFIED as i32
         };
         if want_cost {
-            let term = (0.5 * dd[i] * jar[i] * jar[i]).to_bits();
-            s += f64::from_bits((term & keep) | ((-0.0f64).to_bits() & !keep));
+            s += kept_or_neg_zero(0.5 * dd[i] * jar[i] * jar[i], quadratic);
         }
         i += 1;
     }

@@ -15,6 +15,7 @@ use crate::math::chol_sparse::{
     chol_factor_sparse, chol_factor_sparse_preset, chol_solve_sparse, chol_sparse_pattern,
     chol_sparse_values, chol_update_sparse,
 };
+use crate::math::misc::kept_or_neg_zero;
 use crate::math::sparse::{
     add_td_row, compress_sparse, dot_sparse, keep_nonfinite_rows, mul_mat_vec_sparse,
     sqr_mat_td_sparse_pattern, sqr_mat_td_sparse_values, SparseRef,
@@ -554,12 +555,10 @@ fn eval(d: &Data, c: &mut Ctx, p: &mut Pnt) {
     while i < nefc {
         if d.efc_type[i] != ELLIPTIC {
             // among elliptic cones: an active row adds its quadratic, an inactive one -0
-            // (which adds nothing), chosen by a bit mask without a branch
             let active = c.jaref[i] + alpha * c.jv[i] < 0.0;
-            let keep = (active as u64).wrapping_neg();
             let q = &c.quad[3 * i..3 * i + 3];
             for k in 0..3 {
-                total[k] += f64::from_bits((q[k].to_bits() & keep) | ((-0.0f64).to_bits() & !keep));
+                total[k] += kept_or_neg_zero(q[k], active);
             }
             i += 1;
             continue;

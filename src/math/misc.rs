@@ -155,6 +155,14 @@ pub fn weighted(x: f64, w: f64) -> f64 {
     }
 }
 
+/// x, or -0 where `keep` is false, by a bit mask (no branch): the term of a sum that leaves
+/// some terms out, since s + -0 is s bit for bit for every s (-0 and NaN included).
+#[inline(always)]
+pub fn kept_or_neg_zero(x: f64, keep: bool) -> f64 {
+    let mask = (keep as u64).wrapping_neg();
+    f64::from_bits((x.to_bits() & mask) | ((-0.0f64).to_bits() & !mask))
+}
+
 /// a if a <= b, else b (NaN handling as in MuJoCo).
 #[inline]
 pub fn min(a: f64, b: f64) -> f64 {
