@@ -2,13 +2,35 @@
 //! ancestors read an array instead of chasing dof_parentid one load after another.
 
 /// Deepest path kept; below it the callers follow dof_parentid.
-const DEPTH: usize = 64;
+pub const DEPTH: usize = 64;
 
 /// Whether keeping the path pays in a tree whose sparse inertia has `nm` entries over `nv`
 /// dofs: where rows hold at least `per_dof` entries on average. In shallow trees (cheetah,
 /// walker: about five) the bookkeeping costs more than the loads it saves.
 pub fn deep(nv: usize, nm: usize, per_dof: usize) -> bool {
     nm >= per_dof * nv
+}
+
+/// Whether the rows of the sparse inertia (dof_Madr, nM entries) follow the tree as a solve
+/// by depth needs: dofs in depth-first order, each row holding the dof and its ancestors
+/// (depth + 1 entries), none deeper than DEPTH. A dof's depth is then its row's length less
+/// one, and its ancestors are the last dofs before it at each smaller depth.
+pub fn rows_by_depth(madr: &[i32], parent: &[i32], nm: usize) -> bool {
+    let mut path = [-1i32; DEPTH];
+    let nv = madr.len().min(parent.len());
+    for i in 0..nv {
+        let end = madr.get(i + 1).map_or(nm as i64, |&a| a as i64);
+        let len = end - madr[i] as i64;
+        if madr[i] < 0 || end > nm as i64 || len < 1 || len > DEPTH as i64 {
+            return false;
+        }
+        let d = len as usize - 1;
+        if parent[i] != if d == 0 { -1 } else { path[d - 1] } {
+            return false;
+        }
+        path[d] = i as i32;
+    }
+    true
 }
 
 /// Dofs lie in depth-first order (`abi::consistency` checks it at load), so the ancestors of
