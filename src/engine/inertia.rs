@@ -542,8 +542,35 @@ mod tests {
         }
     }
 
-    /// Factorizations of trees that pull and trees that push, and solves by depth and along
-    /// dof_parentid, give 2.2.2's bit for bit: a forest of a branching deep tree, free bodies,
+    /// 2.2.2's mj_mulM: each dof's row times vec, and its ancestors' sums take its terms.
+    fn mul_by_parents(
+        madr: &[i32],
+        parent: &[i32],
+        simple: &[i32],
+        qm: &[f64],
+        v: &[f64],
+    ) -> Vec<f64> {
+        let mut res = vec![0.0; v.len()];
+        for i in 0..v.len() {
+            let adr = madr[i] as usize;
+            if simple[i] != 0 {
+                res[i] = qm[adr] * v[i];
+                continue;
+            }
+            res[i] += qm[adr] * v[i];
+            let (mut j, mut adr) = (parent[i], adr + 1);
+            while j >= 0 {
+                let ju = j as usize;
+                res[i] += qm[adr] * v[ju];
+                res[ju] += qm[adr] * v[i];
+                (j, adr) = (parent[ju], adr + 1);
+            }
+        }
+        res
+    }
+
+    /// Factorizations of trees that pull and trees that push, solves and products by depth
+    /// and along dof_parentid, give 2.2.2's bit for bit: a forest of a branching deep tree, free bodies,
     /// a small arm and a point mass on slides (simple dofs), and a deep tree alone; random
     /// states, some with NaN, and right-hand sides with zeros, -0, NaN and infinities.
     #[test]
@@ -565,7 +592,7 @@ mod tests {
             branches(6, r#"type="ball""#)
         );
         let mut uniform = crate::math::tests::uniform(7);
-        let mut modes = [false; 2];
+        let mut modes = [false; 3];
         for body in [forest, deep] {
             let xml = format!(
                 r#"<mujoco><option><flag contact="disable"/></option>
@@ -584,7 +611,7 @@ mod tests {
                 data.with_core(|m, d| {
                     let (madr, parent, simple) =
                         (m.dof_Madr(), m.dof_parentid(), m.dof_simplenum());
-                    assert!(simple.iter().any(|&s| s != 0) || nv > 40, "no simple dof");
+                    modes[2] |= simple.iter().any(|&s| s != 0);
                     crate::engine::forward::fwd_position(m, d)?;
                     let mut want = d.qM.to_vec();
                     factor_pushed(madr, parent, simple, &mut want);
@@ -610,12 +637,19 @@ mod tests {
                         let mut x = y.clone();
                         super::solve_ld(m, &mut x, None, 1, d.qLD, d.qLDiagInv);
                         assert_eq!(bits(&x), bits(&want_x), "solve, state {k}, rhs {r}");
+                        let want_mv = mul_by_parents(madr, parent, simple, d.qM, &y);
+                        let mut mv = vec![f64::NAN; nv];
+                        crate::engine::jacobian::mul_m(m, d.qM, &mut mv, &y);
+                        assert_eq!(bits(&mv), bits(&want_mv), "mulM, state {k}, rhs {r}");
                     }
                     Ok(())
                 })
                 .unwrap();
             }
         }
-        assert_eq!(modes, [true, true], "a tree that pulls, a solve by depth");
+        assert_eq!(
+            modes, [true; 3],
+            "a tree that pulls, a solve by depth, a simple dof"
+        );
     }
 }
