@@ -276,9 +276,9 @@ pub fn factor_m(m: &Model, d: &mut Data) -> Result<(), EngineError> {
 }
 
 /// Trees where solves run by depth (`push_by_depth`, `gather_from_ancestors`): at least this
-/// many entries a row on average (dog: a sixth off a solve). In shallower trees (humanoid)
-/// they gain nothing on 2.2.2's walk along dof_parentid, which small trees run faster.
-const SOLVE_DEPTH: usize = 12;
+/// many entries a row on average (dog: a sixth off a solve; rodent, humanoid_CMU: 3-5%). In
+/// shallower trees (humanoid) they gain nothing on 2.2.2's walk along dof_parentid.
+const SOLVE_DEPTH: usize = 10;
 
 /// The factor's nM entries where solves run by depth: in deep trees whose rows follow the
 /// tree by depth.
