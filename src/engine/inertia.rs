@@ -196,9 +196,9 @@ fn pull(qld: &mut [f64], madr: &[i32], simple: &[i32], i: usize, ends: &mut [f64
         row: (start(i), len),
         desc: (i + 1, end, e),
     };
-    // blocks of 16 columns counted from the row's end, as every row is read by its
-    // ancestors (its last entries) and written: a block read soon after it was written is
-    // read whole from one store (dog: a fifth off the factorization)
+    // blocks of 16 columns (the wider, the fewer passes over the descendants; 24 was slower)
+    // counted from the row's end, as its ancestors read it (their last entries): measured
+    // faster than from its start (dog: a fifth off the factorization with both)
     let mut col = rows.block::<true>(qld, 0, (len - 1) % 16 + 1);
     while col < len {
         col += rows.block::<false>(qld, col, 16);
@@ -364,11 +364,10 @@ fn scatter_to_ancestors(m: &Model, x: &mut [f64], qld: &[f64]) {
 
 /// `scatter_to_ancestors` where the rows follow the tree by depth. The ancestors of the dof
 /// at hand are kept by depth in `on_path` (slot DEPTH-1-k for depth k), each from its first
-/// update on, so that a dof's updates run four ancestors at a time: at the same four slots
-/// whatever the dof, so that each block reads back the block last written there whole. Slots
-/// past the dof's ancestors take terms too, unused: a dof's own slot and deeper ones are
-/// dead once it is reached (the dof before it is its parent, or a leaf whose new ancestors
-/// are read from x).
+/// update on, so that a dof's updates run four ancestors at a time, in blocks at the same
+/// slots whatever the dof. Slots past the dof's ancestors take terms too, unused: a dof's own
+/// slot and deeper ones are dead once it is reached (the dof before it is its parent, or a
+/// leaf whose new ancestors are read from x).
 fn push_by_depth(madr: &[i32], simple: &[i32], parent: &[i32], x: &mut [f64], qld: &[f64]) {
     let (nv, nm) = (x.len(), qld.len());
     let mut on_path = [0.0; DEPTH];
