@@ -3,6 +3,9 @@
 //                            "crash <signal>" or "hang" (each load in a child, 20 s limit)
 //   loader time FILE...      loads each file once; one line per file: the seconds taken, or
 //                            "-1" when it does not load
+//   loader mjbsave DIR FILE...  saves each file's model as DIR/<index>.mjb; one line per file:
+//                            that path, or "-" when it does not load
+//   loader mjbtime FILE...   mj_loadModel of each MJB file once, as `time`
 #include "child.h"  // first: it sets the feature macros
 #include <stdlib.h>
 #include <string.h>
@@ -61,6 +64,30 @@ int main(int argc, char** argv) {
     }
     return 0;
   }
-  fprintf(stderr, "usage: loader verdict FILE... | loader time FILE...\n");
+  if (argc >= 3 && !strcmp(argv[1], "mjbsave")) {
+    mju_user_warning = quiet;
+    for (int i = 3; i < argc; i++) {
+      char err[1000] = "", path[4096];
+      mjModel* m = mj_loadXML(argv[i], NULL, err, sizeof err);
+      snprintf(path, sizeof path, "%s/%d.mjb", argv[2], i - 3);
+      if (m) mj_saveModel(m, path, NULL, 0);
+      printf("%s\n", m ? path : "-");
+      mj_deleteModel(m);
+    }
+    return 0;
+  }
+  if (argc >= 3 && !strcmp(argv[1], "mjbtime")) {
+    mju_user_warning = quiet;
+    for (int i = 2; i < argc; i++) {
+      double t0 = now();
+      mjModel* m = mj_loadModel(argv[i], NULL);
+      double t = now() - t0;
+      printf("%.6f\n", m ? t : -1.0);
+      mj_deleteModel(m);
+    }
+    return 0;
+  }
+  fprintf(stderr, "usage: loader verdict FILE... | loader time FILE... | loader mjbsave DIR FILE... | "
+                  "loader mjbtime FILE...\n");
   return 2;
 }

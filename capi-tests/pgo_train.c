@@ -11,6 +11,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 static void quiet(const char* msg) { (void)msg; }
 
@@ -172,6 +173,13 @@ static void train(const char* file, int steps) {
   m = mj_loadModel("model.mjb", &vfs);
   mj_deleteVFS(&vfs);
   if (!m) return;
+  // the file path of mj_loadModel, and mj_copyModel
+  char path[64];
+  snprintf(path, sizeof path, "/tmp/rujoco-pgo-%d.mjb", (int)getpid());
+  mj_saveModel(m, path, NULL, 0);
+  mj_deleteModel(mj_loadModel(path, NULL));
+  remove(path);
+  mj_deleteModel(mj_copyModel(NULL, m));
   mjData* d = mj_makeData(m);
   mjvScene scn;
   mjv_defaultScene(&scn);

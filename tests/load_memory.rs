@@ -1,7 +1,7 @@
 //! Peak resident memory while loading a large model (dm_control's dog, 24.6 MB compiled, with
-//! meshes, a skin and textures) stays within 1.1x the reference's, and over ten rounds of
-//! load, mj_makeData, a step and freeing both within the reference's; `capi-tests/loadmem.c`
-//! built against each library reports its own high-water mark.
+//! meshes, a skin and textures) stays within the reference's, and over ten rounds of load,
+//! mj_makeData, a step and freeing both too; `capi-tests/loadmem.c` built against each library
+//! reports its own high-water mark.
 
 mod common;
 use common::*;
@@ -60,18 +60,20 @@ fn setup() -> &'static (std::path::PathBuf, std::path::PathBuf, String, String) 
 }
 
 #[test]
-fn dog_load_peak_within_1_1x_reference() {
+fn dog_load_peak_within_reference() {
     let (ours, reference, model, note) = setup().clone();
     // best of 3 per side: the peak is deterministic up to page-level noise
     let best = |prog: &std::path::Path| (0..3).map(|_| peak_kb(prog, &[&model])).min().unwrap();
     let (rp, rr) = best(&reference);
     let (op, or) = best(&ours);
     let ratio = op as f64 / rp as f64;
+    // a small model's peak is mostly each library's own code and data: 1.1x there
+    let limit = if note.is_empty() { 1.0 } else { 1.1 };
     let body = format!(
-        "load memory: {model}{note}\n  peak: ours {op} kB, reference {rp} kB, ratio {ratio:.3} (limit 1.1)\n  resident after load: ours {or} kB, reference {rr} kB\n"
+        "load memory: {model}{note}\n  peak: ours {op} kB, reference {rp} kB, ratio {ratio:.3} (limit {limit})\n  resident after load: ours {or} kB, reference {rr} kB\n"
     );
     report("load-memory", &body);
-    assert!(ratio <= 1.1, "{body}");
+    assert!(ratio <= limit, "{body}");
 }
 
 /// Repeated load/free rounds: what the heap keeps between rounds must not lift the peak above

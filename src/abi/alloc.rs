@@ -3,7 +3,9 @@
 
 use super::view::ViewSlot;
 use super::*;
-use crate::runtime::memory::{alloc_large, copy_pages, free, free_large, malloc, maps};
+use crate::runtime::memory::{
+    alloc_large, alloc_model_block, copy_pages, free, free_large, free_model_block, malloc, maps,
+};
 use std::os::raw::c_void;
 
 const ALIGN: usize = 64;
@@ -28,6 +30,8 @@ macro_rules! model_rows {
         fn model_rows(m: &mjModel) -> Vec<(&'static str, usize, usize)> {
             vec![$((stringify!($name), std::mem::size_of::<elem_ty!($t)>(), row_len!(m, $d1, $($d2)+)),)*]
         }
+        /// Number of arrays of mjModel.
+        const MODEL_NPTR: usize = [$(stringify!($name)),*].len();
         unsafe fn set_model_pointers(m: &mut mjModel) {
             let base = m.buffer as *mut u8;
             let mut off = 0usize;
@@ -37,6 +41,22 @@ macro_rules! model_rows {
                 off += std::mem::size_of::<elem_ty!($t)>() * row_len!(m, $d1, $($d2)+);
             )*
             debug_assert_eq!(off, m.nbuffer as usize);
+        }
+        /// `f(offset, length)` of every array in `m.buffer` in turn in X-macro order,
+        /// until an error.
+        #[allow(unused_assignments)]
+        pub fn walk_model_spans<E>(
+            m: &mjModel,
+            mut f: impl FnMut(usize, usize) -> Result<(), E>,
+        ) -> Result<(), E> {
+            let mut end = 0usize;
+            $(
+                let off = end + pad(end);
+                let len = std::mem::size_of::<elem_ty!($t)>() * row_len!(m, $d1, $($d2)+);
+                f(off, len)?;
+                end = off + len;
+            )*
+            Ok(())
         }
     };
 }
@@ -81,12 +101,18 @@ macro_rules! model_int_names {
         pub fn model_ints(m: &mjModel) -> Vec<(&'static str, i32)> {
             vec![$((stringify!($name), m.$name),)*]
         }
+        /// Number of int fields of mjModel.
+        const MODEL_NINT: usize = [$(stringify!($name)),*].len();
     };
 }
 mjmodel_ints!(model_int_names);
 
-/// Allocates a model whose int fields are copied from `sizes`; arrays zeroed, default options.
-pub fn make_model(sizes: &mjModel) -> Result<*mut mjModel, String> {
+/// Allocates a model whose int fields are copied from `sizes`; default options. `overwrite`:
+/// the caller writes every byte of the buffer (a copy, an MJB image): it may hold old bytes
+/// (`memory::alloc_model_block`), fresh pages come in at once; else it is zeroed, fresh pages
+/// coming in as they are first written (a compiler filling it while freeing its own arrays:
+/// a lower peak).
+pub fn make_model(sizes: &mjModel, overwrite: bool) -> Result<*mut mjModel, String> {
     for (name, v) in model_ints(sizes) {
         if v < 0 {
             return Err(format!("Invalid model: negative {name}"));
@@ -109,12 +135,12 @@ pub fn make_model(sizes: &mjModel) -> Result<*mut mjModel, String> {
     header.vis = default_visual();
     header.stat = default_statistic();
     let m = malloc(std::mem::size_of::<mjModel>()) as *mut mjModel;
-    let buffer = alloc_large(nbuffer.max(1), true);
+    let buffer = alloc_model_block(nbuffer.max(1), overwrite);
     if m.is_null() || buffer.is_null() {
         // SAFETY: each is NULL or a fresh allocation.
         unsafe {
             free(m as *mut c_void);
-            free_large(buffer, nbuffer.max(1));
+            free_model_block(buffer, nbuffer.max(1));
         }
         return Err("Could not allocate mjModel".into());
     }
@@ -140,7 +166,7 @@ mjmodel_ints!(copy_int_fields);
 /// `m` is NULL or came from `make_model`.
 pub unsafe fn delete_model(m: *mut mjModel) {
     if !m.is_null() {
-        free_large((*m).buffer, (*m).nbuffer.max(1) as usize);
+        free_model_block((*m).buffer, (*m).nbuffer.max(1) as usize);
         free(m as *mut c_void);
     }
 }
@@ -151,7 +177,7 @@ pub unsafe fn delete_model(m: *mut mjModel) {
 /// `dest` is NULL or came from `make_model`; `src` came from `make_model`.
 pub unsafe fn copy_model(dest: *mut mjModel, src: &mjModel) -> Result<*mut mjModel, String> {
     let dest = if dest.is_null() {
-        make_model(src)?
+        make_model(src, true)?
     } else {
         dest
     };
@@ -437,11 +463,6 @@ fn spans(rows: &[(&'static str, usize, usize)]) -> Vec<(&'static str, usize, usi
         .collect()
 }
 
-/// Every mjModel array as (name, byte offset in `m.buffer`, byte length), in X-macro order.
-pub fn model_spans(m: &mjModel) -> Vec<(&'static str, usize, usize)> {
-    spans(&model_rows(m))
-}
-
 /// Every mjData array as (name, byte offset in `d.buffer`, byte length), in X-macro order.
 pub fn data_spans(m: &mjModel) -> Vec<(&'static str, usize, usize)> {
     spans(&data_rows(m))
@@ -449,7 +470,5 @@ pub fn data_spans(m: &mjModel) -> Vec<(&'static str, usize, usize)> {
 
 /// Number of int fields and of arrays of mjModel: the MJB header's counts.
 pub fn model_counts() -> (usize, usize) {
-    // SAFETY: all-zero bits are a valid mjModel.
-    let zero: mjModel = unsafe { std::mem::zeroed() };
-    (model_ints(&zero).len(), model_rows(&zero).len())
+    (MODEL_NINT, MODEL_NPTR)
 }

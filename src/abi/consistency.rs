@@ -16,9 +16,13 @@ fn within(v: i64, lo: i64, hi: i64) -> bool {
     v >= lo && v < hi
 }
 
-/// Every value of `vals` in `lo..hi`, else the field's name.
+/// Every value of `vals` in `lo..hi`, else the field's name (by the least and the greatest:
+/// one pass without a branch per value).
 fn all_within(vals: &[i32], lo: i64, hi: i64, what: &str) -> Result<(), String> {
-    match vals.iter().all(|&v| within(v as i64, lo, hi)) {
+    let (least, most) = vals
+        .iter()
+        .fold((i32::MAX, i32::MIN), |(a, b), &v| (a.min(v), b.max(v)));
+    match vals.is_empty() || (within(least as i64, lo, hi) && within(most as i64, lo, hi)) {
         true => Ok(()),
         false => Err(bad(&format!("{what} out of range"))),
     }

@@ -1,7 +1,7 @@
 //! MJB, 2.2.2's binary model format: a 4-int header, the int fields, mjOption, mjVisual,
 //! mjStatistic, then every X-macro array unpadded, in order.
 
-use super::alloc::{make_model, model_counts, model_spans};
+use super::alloc::{make_model, model_counts, walk_model_spans};
 use super::*;
 
 const ID: i32 = 54321;
@@ -41,9 +41,10 @@ pub fn write_parts(m: &mjModel, mut put: impl FnMut(&[u8])) {
     put(bytes_of(&m.stat));
     // SAFETY: the buffer holds nbuffer bytes.
     let buf = unsafe { std::slice::from_raw_parts(m.buffer as *const u8, m.nbuffer as usize) };
-    for (_, off, len) in model_spans(m) {
+    let _ = walk_model_spans(m, |off, len| -> Result<(), ()> {
         put(&buf[off..off + len]);
-    }
+        Ok(())
+    });
 }
 
 /// A 128-bit fingerprint of the serialized model (two multiplicative lanes over its 8-byte
@@ -87,25 +88,42 @@ impl LoadError {
     }
 }
 
-struct Reader<'a> {
-    data: &'a [u8],
+/// The image read in order, its length known beforehand (a file's size, a buffer's length).
+struct Reader<'a, R: std::io::Read> {
+    src: &'a mut R,
+    len: usize,
     pos: usize,
     /// from a memory buffer (VFS) rather than a file
     buffer: bool,
 }
 
-impl Reader<'_> {
-    fn take(&mut self, n: usize, what: &str) -> Result<&[u8], LoadError> {
-        if self.pos + n > self.data.len() {
-            return Err(if self.buffer {
+impl<R: std::io::Read> Reader<'_, R> {
+    /// The next `dst.len()` bytes into `dst`; past the end, 2.2.2's message for the part
+    /// (`what`), or its error for a memory buffer. A file that reads short says the same.
+    fn read(&mut self, dst: &mut [u8], what: &str) -> Result<(), LoadError> {
+        let short = || {
+            if self.buffer {
                 LoadError::Error("Attempting to read outside model buffer".into())
             } else {
                 LoadError::Warning(what.to_string())
-            });
+            }
+        };
+        if self.pos + dst.len() > self.len {
+            return Err(short());
         }
-        let s = &self.data[self.pos..self.pos + n];
-        self.pos += n;
-        Ok(s)
+        if dst.is_empty() {
+            return Ok(());
+        }
+        self.src.read_exact(dst).map_err(|_| short())?;
+        self.pos += dst.len();
+        Ok(())
+    }
+
+    /// The next `n` bytes, as `read`.
+    fn take(&mut self, n: usize, what: &str) -> Result<Vec<u8>, LoadError> {
+        let mut v = vec![0; n];
+        self.read(&mut v, what)?;
+        Ok(v)
     }
 }
 
@@ -119,10 +137,22 @@ fn fill<T>(dst: &mut T, src: &[u8]) {
 /// Parses an MJB image (a file's contents, or a memory buffer when `buffer`) into a new model;
 /// errors carry 2.2.2's texts. A buffer may hold more than the model, as 2.2.2 reads it.
 pub fn load(data: &[u8], buffer: bool) -> Result<*mut mjModel, LoadError> {
+    let mut src = data;
+    load_from(&mut src, data.len(), buffer)
+}
+
+/// `load` from an image of `len` bytes read in order from `src` (a file read straight into the
+/// model's arrays, with no copy of the whole image).
+pub fn load_from<R: std::io::Read>(
+    src: &mut R,
+    len: usize,
+    buffer: bool,
+) -> Result<*mut mjModel, LoadError> {
     let (nint, _) = model_counts();
     let warn = |s: &str| LoadError::Warning(s.to_string());
     let mut r = Reader {
-        data,
+        src,
+        len,
         pos: 0,
         buffer,
     };
@@ -140,13 +170,11 @@ pub fn load(data: &[u8], buffer: bool) -> Result<*mut mjModel, LoadError> {
             return Err(warn(msgs[i]));
         }
     }
-    let ints = r
-        .take(nint * 4, "Model file does not contain enough ints")?
-        .to_vec();
+    let ints = r.take(nint * 4, "Model file does not contain enough ints")?;
     // SAFETY: all-zero bits are a valid mjModel; only the int prefix is filled.
     let mut sizes: mjModel = unsafe { std::mem::zeroed() };
     fill(&mut sizes, &ints);
-    let m = make_model(&sizes).map_err(|_| warn("Corrupted model, wrong size parameters"))?;
+    let m = make_model(&sizes, true).map_err(|_| warn("Corrupted model, wrong size parameters"))?;
     // SAFETY: m is a fresh model; its buffer has nbuffer bytes.
     unsafe {
         let mm = &mut *m;
@@ -157,32 +185,43 @@ pub fn load(data: &[u8], buffer: bool) -> Result<*mut mjModel, LoadError> {
         let result = (|| -> Result<(), LoadError> {
             fill(
                 &mut mm.opt,
-                r.take(
+                &r.take(
                     std::mem::size_of::<mjOption>(),
                     "Model file does not have a complete mjOption",
                 )?,
             );
             fill(
                 &mut mm.vis,
-                r.take(
+                &r.take(
                     std::mem::size_of::<mjVisual>(),
                     "Model file does not have a complete mjVisual",
                 )?,
             );
             fill(
                 &mut mm.stat,
-                r.take(
+                &r.take(
                     std::mem::size_of::<mjStatistic>(),
                     "Model file does not have a complete mjStatistic",
                 )?,
             );
             let buf = std::slice::from_raw_parts_mut(mm.buffer as *mut u8, mm.nbuffer as usize);
-            for (_, off, len) in model_spans(mm) {
-                buf[off..off + len].copy_from_slice(
-                    r.take(len, "Model file does not contain a large enough buffer")?,
-                );
-            }
-            if !buffer && r.pos != data.len() {
+            // the arrays, and zeros between them (the buffer may hold an old model's bytes)
+            let mut end = 0;
+            walk_model_spans(mm, |off, len| {
+                if end < off {
+                    buf[end..off].fill(0);
+                }
+                end = off + len;
+                if len == 0 {
+                    return Ok(());
+                }
+                r.read(
+                    &mut buf[off..end],
+                    "Model file does not contain a large enough buffer",
+                )
+            })?;
+            buf[end..].fill(0);
+            if !buffer && r.pos != r.len {
                 return Err(warn("Model file is too large"));
             }
             if let Some(e) = validate::validate_references(view::Model::new(mm)) {

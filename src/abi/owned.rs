@@ -16,9 +16,9 @@ unsafe impl Sync for ModelBox {}
 
 impl ModelBox {
     /// A model with the sizes of `sizes`' header, arrays allocated (contents undefined until
-    /// filled).
+    /// filled), their pages put in as they are first written.
     pub fn new(sizes: &mjModel) -> Result<Self, String> {
-        let m = make_model(sizes)?;
+        let m = make_model(sizes, false)?;
         // SAFETY: make_model returns a fresh model or an error.
         Ok(unsafe { Self::from_raw(m) })
     }
@@ -27,6 +27,17 @@ impl ModelBox {
     /// errors carry 2.2.2's texts.
     pub fn from_mjb(bytes: &[u8], buffer: bool) -> Result<Self, mjb::LoadError> {
         let m = mjb::load(bytes, buffer)?;
+        // SAFETY: as in `new`.
+        Ok(unsafe { Self::from_raw(m) })
+    }
+
+    /// A model from an MJB image of `len` bytes read in order from `src` (a file).
+    pub fn from_mjb_reader<R: std::io::Read>(
+        src: &mut R,
+        len: usize,
+        buffer: bool,
+    ) -> Result<Self, mjb::LoadError> {
+        let m = mjb::load_from(src, len, buffer)?;
         // SAFETY: as in `new`.
         Ok(unsafe { Self::from_raw(m) })
     }

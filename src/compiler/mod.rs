@@ -62,14 +62,10 @@ pub fn compile(spec: spec::ModelSpec, blank: mjModel) -> Result<Compiled, CError
     tree::compile(spec, blank)
 }
 
-/// Writes every array of `m` (allocated from `c.header`).
-pub fn fill(c: &Compiled, m: &mut ModelMut) {
-    c.fill(m);
-}
-
-/// Frees what `fill` copied into the model and the later steps do not read (load-time memory).
-pub fn release_bulk(c: &mut Compiled) {
-    c.release_bulk();
+/// Writes every array of `m` (allocated from `c.header`), freeing the bulk as it goes
+/// (`Compiled::fill`).
+pub fn fill(c: &mut Compiled, m: &mut ModelMut, trim: &dyn Fn()) {
+    c.fill(m, trim);
 }
 
 /// Joint stiffness and damping from `springdamper` (time constant, damping ratio), using the

@@ -252,7 +252,7 @@ pub fn compile(mut spec: ModelSpec, h: mjModel) -> Result<Compiled, CError> {
         tendon_matid,
         mat_texid,
     } = assets::resolve(&mut spec, &gspecs, &sspecs)?;
-    let meshes = meshes::compile(&spec, &opts, &gspecs, &geom_mesh)?;
+    let meshes = meshes::compile(&mut spec, &opts, &gspecs, &geom_mesh)?;
     let (geoms, sites) = bodies::compile(
         &mut bodies,
         &mut joints,
@@ -452,24 +452,23 @@ impl Compiled {
         }
     }
 
-    /// Frees the bulk arrays `fill` has copied into the model (meshes, skins, textures, height
-    /// fields); what the compiler's later steps read stays.
-    pub fn release_bulk(&mut self) {
-        self.meshes = Vec::new();
-        self.skins = Vec::new();
-        self.textures = Vec::new();
-        self.hfields = Vec::new();
-    }
-
-    /// Writes every array of a model allocated with the compiled sizes.
-    pub fn fill(&self, m: &mut ModelMut) {
+    /// Writes every array of a model allocated with the compiled sizes; the bulk (skins,
+    /// height fields, textures, meshes) is freed as soon as it is copied, and `trim` called
+    /// after the two largest kinds, so that their pages can serve the model's.
+    pub fn fill(&mut self, m: &mut ModelMut, trim: &dyn Fn()) {
         self.fill_names(m);
         self.fill_tree(m);
         self.fill_cameras_lights(m);
         super::skin::fill(&self.skins, m);
+        self.skins = Vec::new();
         self.fill_hfields(m);
-        self.fill_meshes(m);
+        self.hfields = Vec::new();
         self.fill_textures_materials(m);
+        self.textures = Vec::new();
+        trim();
+        self.fill_meshes(m);
+        self.meshes = Vec::new();
+        trim();
         self.fill_contacts(m);
         self.fill_equalities(m);
         self.fill_tendons(m);

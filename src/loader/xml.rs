@@ -116,8 +116,9 @@ fn compile(spec: compiler::spec::ModelSpec) -> Result<ModelBox, String> {
     let mut m = ModelBox::new(&compiled.header).map_err(|e| format!("Error: {e}"))?;
     *m.opt_mut() = compiled.option;
     *m.vis_mut() = compiled.visual;
-    compiler::fill(&compiled, &mut m.view_mut());
-    compiler::release_bulk(&mut compiled);
+    let nbuffer = m.raw().nbuffer.max(0) as usize;
+    let trim = || runtime::memory::release_free_heap(nbuffer);
+    compiler::fill(&mut compiled, &mut m.view_mut(), &trim);
     // as 2.2.2's compiler: one mjData serves mj_setConst and the length ranges
     let d = new_data(&m).map_err(|_| "Error: could not create mjData".to_string())?;
     finish_compile(&mut m, d, &compiled)?;

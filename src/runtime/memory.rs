@@ -80,7 +80,8 @@ pub fn maps(size: usize) -> bool {
 }
 
 /// `size` zero bytes: through the user allocator (then cleared), else mapped when large
-/// (64-byte aligned; `populate`: its pages in at once), else from the C heap.
+/// (64-byte aligned; `populate`: its pages in at once), else from the C heap. A mapping's
+/// first word holds its length (a spare block handed out again may be longer than asked).
 pub fn alloc_large(size: usize, populate: bool) -> *mut c_void {
     let populate = if populate { libc::MAP_POPULATE } else { 0 };
     if !maps(size) {
@@ -89,7 +90,7 @@ pub fn alloc_large(size: usize, populate: bool) -> *mut c_void {
     let ptr = size
         .checked_add(MAP_OFFSET)
         .map_or(std::ptr::null_mut(), |len| {
-            // SAFETY: an anonymous private mapping of `len` bytes.
+            // SAFETY: an anonymous private mapping of `len` bytes, its first word written.
             unsafe {
                 let base = libc::mmap(
                     std::ptr::null_mut(),
@@ -102,6 +103,7 @@ pub fn alloc_large(size: usize, populate: bool) -> *mut c_void {
                 if base == libc::MAP_FAILED {
                     std::ptr::null_mut()
                 } else {
+                    (base as *mut usize).write(len);
                     (base as *mut u8).add(MAP_OFFSET) as *mut c_void
                 }
             }
@@ -110,6 +112,74 @@ pub fn alloc_large(size: usize, populate: bool) -> *mut c_void {
         error("Could not allocate memory");
     }
     ptr
+}
+
+/// Largest model buffer kept mapped when freed, for the next model (glibc's heap keeps freed
+/// blocks up to its largest mmap threshold, 32 MB, and 2.2.2's models come from it).
+const SPARE_MAX: usize = 32 << 20;
+
+/// The mapping (base address, length) of the last model buffer freed, if it was mapped and
+/// at most `SPARE_MAX`: a model loaded or copied next takes over its pages, written already,
+/// instead of the kernel clearing and mapping in fresh ones.
+static SPARE: std::sync::Mutex<Option<(usize, usize)>> = std::sync::Mutex::new(None);
+
+/// A block for a model buffer of `size` bytes, freed by `free_model_block`. `overwrite`: the
+/// caller writes every byte, so it may hold old bytes; else it is zeroed. A large one is the
+/// spare mapping when that fits, otherwise a fresh one (its pages put in at once when
+/// `overwrite`); a small one comes from the heap.
+pub fn alloc_model_block(size: usize, overwrite: bool) -> *mut c_void {
+    if !maps(size) {
+        // from the heap (as 2.2.2's): cleared only when the caller does not overwrite it
+        return if overwrite {
+            malloc(size)
+        } else {
+            malloc_zeroed(size)
+        };
+    }
+    if let Some(ptr) = take_spare(size) {
+        if !overwrite {
+            // SAFETY: the spare mapping holds at least `size` bytes past its offset.
+            unsafe { std::ptr::write_bytes(ptr as *mut u8, 0, size) };
+        }
+        return ptr;
+    }
+    alloc_large(size, overwrite)
+}
+
+/// The spare mapping's block when it holds `size` bytes and is at most twice as long.
+fn take_spare(size: usize) -> Option<*mut c_void> {
+    let need = size.checked_add(MAP_OFFSET)?;
+    let mut slot = SPARE.lock().ok()?;
+    let (base, len) = (*slot)?;
+    if len < need || len / 2 > need {
+        return None;
+    }
+    *slot = None;
+    Some((base as *mut u8).wrapping_add(MAP_OFFSET) as *mut c_void)
+}
+
+/// Frees a block from `alloc_model_block` of the same `size`: a mapping of at most
+/// `SPARE_MAX` becomes the spare (the one before it is unmapped).
+///
+/// # Safety
+/// `ptr` is NULL or came from `alloc_model_block(size, _)` and was not freed.
+pub unsafe fn free_model_block(ptr: *mut c_void, size: usize) {
+    let user = mju_user_free;
+    if ptr.is_null() || user.is_some() || size < LARGE_BLOCK {
+        return free_large(ptr, size);
+    }
+    let base = (ptr as *mut u8).sub(MAP_OFFSET);
+    let len = (base as *const usize).read();
+    if len > SPARE_MAX {
+        return free_large(ptr, size);
+    }
+    let old = match SPARE.lock() {
+        Ok(mut slot) => slot.replace((base as usize, len)),
+        Err(_) => return free_large(ptr, size),
+    };
+    if let Some((b, l)) = old {
+        libc::munmap(b as *mut c_void, l);
+    }
 }
 
 /// Pages of a block mapped by `alloc_large` that were never written (nor swapped out) read as
@@ -307,7 +377,8 @@ pub unsafe fn free_large(ptr: *mut c_void, size: usize) {
         return free(ptr);
     }
     let base = (ptr as *mut u8).sub(MAP_OFFSET);
-    libc::munmap(base as *mut c_void, size + MAP_OFFSET);
+    let len = (base as *const usize).read();
+    libc::munmap(base as *mut c_void, len);
 }
 
 /// Frees memory from `malloc` or `malloc_zeroed`, through the user deallocator when set.

@@ -5,7 +5,7 @@ use crate::compiler::mesh::{self, Mesh};
 
 /// Compiles every mesh (a colliding mesh geom needs the convex hull).
 pub(super) fn compile(
-    spec: &ModelSpec,
+    spec: &mut ModelSpec,
     opts: &CompilerOpts,
     gspecs: &[Geom],
     geom_mesh: &[Option<usize>],
@@ -23,11 +23,13 @@ pub(super) fn compile(
         exactmeshinertia: opts.exactmeshinertia,
     };
     let mut meshes = Vec::with_capacity(spec.meshes.len());
-    for (id, m) in spec.meshes.iter().enumerate() {
+    for (id, m) in spec.meshes.iter_mut().enumerate() {
         meshes.push(
             mesh::compile(m, &mesh_opts, needhull[id])
                 .map_err(|e| CError::at(e, &m.name, id, m.line))?,
         );
+        // the file's bytes are read: free them before the next mesh (a lower load peak)
+        m.bytes = None;
     }
     Ok(meshes)
 }
