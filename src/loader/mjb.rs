@@ -7,18 +7,25 @@ use crate::abi::owned::ModelBox;
 /// The model in MJB file `filename` (from the VFS, else disk); errors are 2.2.2's warnings and
 /// errors.
 pub fn load_file(filename: &str, vfs: Option<&Vfs>) -> Result<ModelBox, LoadError> {
-    let in_vfs = vfs.is_some_and(|v| v.get(filename).is_some());
-    if !in_vfs {
+    let cannot_open = || LoadError::Warning(format!("Could not open file '{filename}'"));
+    if vfs.is_some_and(|v| v.get(filename).is_some()) {
+        let (bytes, buffer) = vfs::read(filename, vfs).ok_or_else(cannot_open)?;
+        return ModelBox::from_mjb(&bytes, buffer);
+    }
+    let mut file = std::fs::File::open(filename).map_err(|_| cannot_open())?;
+    match file.metadata() {
         // a regular file is read straight into the model's arrays
-        if let Ok(file) = std::fs::File::open(filename) {
-            if let Some(meta) = file.metadata().ok().filter(|m| m.is_file()) {
-                let len = meta.len() as usize;
-                let mut src = std::io::BufReader::with_capacity(len.min(1 << 16), file);
-                return ModelBox::from_mjb_reader(&mut src, len, false);
-            }
+        Ok(meta) if meta.is_file() => {
+            let len = meta.len() as usize;
+            let mut src = std::io::BufReader::with_capacity(len.min(1 << 16), file);
+            ModelBox::from_mjb_reader(&mut src, len, false)
+        }
+        // a pipe or a device read through once; what a read error leaves is what was read,
+        // as 2.2.2's fread (a directory opens and reads nothing: an incomplete header)
+        _ => {
+            let mut bytes = Vec::new();
+            let _ = std::io::Read::read_to_end(&mut file, &mut bytes);
+            ModelBox::from_mjb(&bytes, false)
         }
     }
-    let (bytes, buffer) = vfs::read(filename, vfs)
-        .ok_or_else(|| LoadError::Warning(format!("Could not open file '{filename}'")))?;
-    ModelBox::from_mjb(&bytes, buffer)
 }

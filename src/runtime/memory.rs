@@ -164,8 +164,7 @@ fn take_spare(size: usize) -> Option<*mut c_void> {
 /// # Safety
 /// `ptr` is NULL or came from `alloc_model_block(size, _)` and was not freed.
 pub unsafe fn free_model_block(ptr: *mut c_void, size: usize) {
-    let user = mju_user_free;
-    if ptr.is_null() || user.is_some() || size < LARGE_BLOCK {
+    if ptr.is_null() || !maps(size) {
         return free_large(ptr, size);
     }
     let base = (ptr as *mut u8).sub(MAP_OFFSET);
@@ -372,8 +371,8 @@ impl Drop for PageMap {
 /// # Safety
 /// `ptr` is NULL or came from `alloc_large(size, _)` and was not freed.
 pub unsafe fn free_large(ptr: *mut c_void, size: usize) {
-    let user = mju_user_free;
-    if ptr.is_null() || user.is_some() || size < LARGE_BLOCK {
+    // mapped exactly when `alloc_large` maps (no user allocator), whatever deallocator is set
+    if ptr.is_null() || !maps(size) {
         return free(ptr);
     }
     let base = (ptr as *mut u8).sub(MAP_OFFSET);
