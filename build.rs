@@ -22,6 +22,53 @@ mod tables {
     pub const DATA_VECTOR: &[&str] = mjdata_vector!(rows);
 }
 
+/// The shared library's functions laid out in the order of pgo/symbol-order.txt (`cargo xtask
+/// order`: a program's first calls together, the rest as the linker's own profile-guided
+/// layout had it), where rustc links with its own lld (Rust 1.90 and later on x86-64 Linux) and
+/// no other linker is set; elsewhere, or with RUJOCO_SYMBOL_ORDER=0, the linker's layout.
+/// Symbols the file names that a build lacks are passed over.
+fn symbol_order() {
+    println!("cargo:rerun-if-changed=pgo/symbol-order.txt");
+    for var in [
+        "RUSTC_LINKER",
+        "CARGO_ENCODED_RUSTFLAGS",
+        "RUJOCO_SYMBOL_ORDER",
+    ] {
+        println!("cargo:rerun-if-env-changed={var}");
+    }
+    if std::env::var("RUJOCO_SYMBOL_ORDER").is_ok_and(|v| v == "0") {
+        return;
+    }
+    let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("pgo/symbol-order.txt");
+    let flags = std::env::var("CARGO_ENCODED_RUSTFLAGS").unwrap_or_default();
+    let other_linker = std::env::var_os("RUSTC_LINKER").is_some()
+        || ["linker", "link-self-contained", "link-arg=-fuse-ld"]
+            .iter()
+            .any(|f| flags.contains(f));
+    let lld_by_default = std::env::var("TARGET").is_ok_and(|t| t == "x86_64-unknown-linux-gnu")
+        && rustc_minor().is_some_and(|v| v >= 90);
+    if file.is_file() && lld_by_default && !other_linker {
+        println!(
+            "cargo:rustc-cdylib-link-arg=-Wl,--symbol-ordering-file={}",
+            file.display()
+        );
+        println!("cargo:rustc-cdylib-link-arg=-Wl,--no-warn-symbol-ordering");
+    }
+}
+
+/// The minor version of the rustc building this crate (1.x).
+fn rustc_minor() -> Option<u32> {
+    let rustc = std::env::var("RUSTC").unwrap_or_else(|_| "rustc".into());
+    let out = std::process::Command::new(rustc).arg("-V").output().ok()?;
+    let text = String::from_utf8_lossy(&out.stdout);
+    text.split_whitespace()
+        .nth(1)?
+        .split('.')
+        .nth(1)?
+        .parse()
+        .ok()
+}
+
 /// qhull 2020.2 (vendor/qhull) and the hull shim the mesh compiler calls.
 fn qhull() {
     let dir = Path::new("vendor/qhull/src/libqhull_r");
@@ -49,6 +96,7 @@ fn main() {
     println!("cargo:rerun-if-changed=build.rs");
     println!("cargo:rerun-if-changed=pgo/rujoco.profdata");
     println!("cargo:rustc-cdylib-link-arg=-Wl,-soname,libmujoco.so.2.2.2");
+    symbol_order();
     qhull();
 
     let root = PathBuf::from(std::env::var("CARGO_MANIFEST_DIR").unwrap());

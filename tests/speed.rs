@@ -207,6 +207,10 @@ fn load_times(prog: &Path, mode: &str, files: &[String]) -> Vec<f64> {
 /// Loads a re-timing takes per library when each is in a fresh process.
 const FRESH_LOADS: usize = 9;
 
+/// How much longer than the reference's a load may take before a ratio under 0.75 fails the
+/// test (seconds): a fresh process's first load of a file of a few kB takes about 0.1 ms.
+const GROSS: f64 = 50e-6;
+
 /// Load times of one pass, both libraries: (reference, ours) seconds of each file both load.
 #[derive(Default)]
 struct LoadPass {
@@ -214,8 +218,9 @@ struct LoadPass {
     /// loads of the file in one process
     fresh: bool,
     both: Vec<(f64, f64, String)>,
-    /// re-timed ratios (reference over ours) of the files ours loaded slower in the pass
-    again: Vec<(f64, String)>,
+    /// re-timed ratios (reference over ours) of the files ours loaded slower in the pass, with
+    /// how much longer ours took (seconds a load)
+    again: Vec<(f64, f64, String)>,
 }
 
 impl LoadPass {
@@ -247,15 +252,17 @@ impl LoadPass {
                     r.extend(load_times(reference, mode, std::slice::from_ref(f)));
                     o.extend(load_times(ours, mode, std::slice::from_ref(f)));
                 }
-                return median(r) / median(o);
+                return (median(r), median(o));
             }
             let batch = vec![f.clone(); n];
             r.extend(load_times(reference, mode, &batch));
             o.extend(load_times(ours, mode, &batch));
             o.extend(load_times(ours, mode, &batch));
             r.extend(load_times(reference, mode, &batch));
-            median(r) / median(o)
+            (median(r), median(o))
         };
+        // the best re-timing: the highest ratio
+        let ratio = |t: (f64, f64)| t.0 / t.1;
         for ((&r, &o), (f, name)) in tr.iter().zip(&to).zip(files.iter().zip(names)) {
             if r < 0.0 || o < 0.0 {
                 continue;
@@ -265,19 +272,24 @@ impl LoadPass {
                 let n = (0.05 / r.max(o)).round().clamp(3.0, 25.0) as usize;
                 let mut best = retime(f, n);
                 for _ in 1..3 {
-                    if best > 1.0 {
+                    if ratio(best) > 1.0 {
                         break;
                     }
-                    best = best.max(retime(f, n));
+                    let t = retime(f, n);
+                    if ratio(t) > ratio(best) {
+                        best = t;
+                    }
                 }
-                self.again.push((best, name.clone()));
+                self.again
+                    .push((ratio(best), best.1 - best.0, name.clone()));
             }
         }
     }
 
-    /// The report's lines; asserts the pass ran and no model is grossly slower (a shared machine
-    /// swings by tens of percent over a few milliseconds; the goal, at least 1.0x, is read from
-    /// the report).
+    /// The report's lines; asserts the pass ran and no model is grossly slower: under 0.75x and
+    /// by more than `GROSS` a load (a shared machine swings by tens of percent over a few
+    /// milliseconds, and a fresh process's first load of a small file by tens of microseconds;
+    /// the goal, at least 1.0x, is read from the report).
     fn report(mut self, what: &str) -> String {
         let (sr, so) = self
             .both
@@ -303,11 +315,12 @@ impl LoadPass {
             self.again.len(),
             self.again.iter().filter(|a| a.0 > 1.0).count()
         );
-        for (ratio, f) in self.again.iter().take(5) {
-            msg += &format!("    {ratio:.2}x {f}\n");
+        for (ratio, more, f) in self.again.iter().take(5) {
+            msg += &format!("    {ratio:.2}x ({:+.0} us a load) {f}\n", more * 1e6);
         }
         assert!(!self.both.is_empty() && sr > 0.0 && so > 0.0, "{msg}");
-        assert!(self.again.first().is_none_or(|a| a.0 > 0.75), "{msg}");
+        let gross = self.again.iter().find(|a| a.0 < 0.75 && a.1 > GROSS);
+        assert!(gross.is_none(), "{msg}");
         msg
     }
 }
@@ -448,4 +461,97 @@ fn build_profile() {
         body.push_str(&format!("  changed: {p}\n"));
     }
     report("build-profile", &body);
+}
+
+/// The shared library's function order (pgo/symbol-order.txt, `cargo xtask order`, passed to
+/// the linker by build.rs where rustc links with its own lld: Rust 1.90 and later on x86-64
+/// Linux): MJB loading's functions listed together at the end, and in each library built here
+/// (the baseline and the x86-64-v3 one) the listed functions it has lie in the listed order
+/// from the start of its code; the report says how many of the listed functions the library
+/// lacks (a stale order leaves results unchanged and the first calls' code spread out: `cargo
+/// xtask order`).
+#[test]
+fn function_order() {
+    let list = std::fs::read_to_string(root().join("pgo/symbol-order.txt")).unwrap_or_default();
+    let listed: Vec<&str> = list
+        .lines()
+        .filter(|l| !l.starts_with('#') && !l.is_empty())
+        .collect();
+    assert!(
+        listed.len() > 1000,
+        "pgo/symbol-order.txt is missing or short"
+    );
+    let load = listed.iter().position(|s| s.contains("make_model"));
+    assert!(
+        load.is_some_and(|i| i + 60 > listed.len()),
+        "MJB loading is not listed at the end"
+    );
+    let rustc = std::process::Command::new("rustc")
+        .arg("-V")
+        .output()
+        .unwrap();
+    let minor: u32 = text(&rustc.stdout)
+        .split_whitespace()
+        .nth(1)
+        .and_then(|v| v.split('.').nth(1)?.parse().ok())
+        .unwrap_or(0);
+    let mut body = format!(
+        "function order: pgo/symbol-order.txt lists {} functions\n",
+        listed.len()
+    );
+    let base = our_lib();
+    let v3 = lib_dir().join(HWCAPS_V3).join("libmujoco.so.2.2.2");
+    for lib in std::iter::once(base).chain(v3.is_file().then_some(v3)) {
+        let nm = std::process::Command::new("nm")
+            .args(["-n", "--defined-only"])
+            .arg(&lib)
+            .output()
+            .expect("nm (binutils)");
+        // function symbols of .text by address; a name that several local functions share
+        // orders them all (the linker puts them together), so only single names are compared
+        let all: Vec<String> = text(&nm.stdout)
+            .lines()
+            .filter_map(|l| {
+                let w: Vec<&str> = l.split_whitespace().collect();
+                (w.len() == 3 && matches!(w[1], "t" | "T" | "W" | "w")).then(|| w[2].to_string())
+            })
+            .filter(|n| !matches!(n.as_str(), "_init" | "_fini"))
+            .collect();
+        let mut count = std::collections::HashMap::new();
+        for n in &all {
+            *count.entry(n.as_str()).or_insert(0) += 1;
+        }
+        let built: Vec<&str> = all
+            .iter()
+            .map(String::as_str)
+            .filter(|n| count[n] == 1)
+            .collect();
+        let present: Vec<&str> = listed
+            .iter()
+            .copied()
+            .filter(|s| count.get(s) == Some(&1))
+            .collect();
+        body += &format!(
+            "  {}: {} of the listed functions present, {} missing\n",
+            lib.display(),
+            listed.iter().filter(|s| count.contains_key(*s)).count(),
+            listed.iter().filter(|s| !count.contains_key(*s)).count()
+        );
+        if minor >= 90 && cfg!(all(target_arch = "x86_64", target_os = "linux")) {
+            // the listed ones first, in the listed order, the others after them
+            let start = built
+                .iter()
+                .position(|n| *n == present[0])
+                .expect("first listed function");
+            assert!(start < 8, "{}: the order is not applied", lib.display());
+            let laid = &built[start..(start + present.len()).min(built.len())];
+            assert!(
+                laid == present,
+                "{}: not in the listed order",
+                lib.display()
+            );
+        }
+    }
+    report("function-order", &body);
+    eprintln!("{body}");
 }

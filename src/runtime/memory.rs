@@ -72,21 +72,35 @@ const LARGE_BLOCK: usize = 1 << 20;
 /// and starts the arrays mid-page (at offset 64, cheetah stepped 2-3% slower).
 const MAP_OFFSET: usize = 2048 + 64;
 
+/// Model buffers of this size and more are mapped (and kept as the spare when freed): below
+/// glibc's first mmap threshold (128 KB) they come from the heap, as its own arrays do.
+const MODEL_BLOCK: usize = 128 << 10;
+
 /// Whether `alloc_large(size, _)` maps a block of its own now (no user allocator, large).
 pub fn maps(size: usize) -> bool {
+    maps_from(size, LARGE_BLOCK)
+}
+
+/// Whether a block of `size` is mapped when blocks of `threshold` and more are.
+fn maps_from(size: usize, threshold: usize) -> bool {
     // SAFETY: reads the handler global, as the C library does.
     let user = unsafe { mju_user_malloc };
-    user.is_none() && size >= LARGE_BLOCK
+    user.is_none() && size >= threshold
 }
 
 /// `size` zero bytes: through the user allocator (then cleared), else mapped when large
 /// (64-byte aligned; `populate`: its pages in at once), else from the C heap. A mapping's
 /// first word holds its length (a spare block handed out again may be longer than asked).
 pub fn alloc_large(size: usize, populate: bool) -> *mut c_void {
-    let populate = if populate { libc::MAP_POPULATE } else { 0 };
     if !maps(size) {
         return malloc_zeroed(size);
     }
+    map_block(size, populate)
+}
+
+/// A fresh mapping holding `size` zero bytes past `MAP_OFFSET`, its length in its first word.
+fn map_block(size: usize, populate: bool) -> *mut c_void {
+    let populate = if populate { libc::MAP_POPULATE } else { 0 };
     let ptr = size
         .checked_add(MAP_OFFSET)
         .map_or(std::ptr::null_mut(), |len| {
@@ -128,7 +142,7 @@ static SPARE: std::sync::Mutex<Option<(usize, usize)>> = std::sync::Mutex::new(N
 /// spare mapping when that fits, otherwise a fresh one (its pages put in at once when
 /// `overwrite`); a small one comes from the heap.
 pub fn alloc_model_block(size: usize, overwrite: bool) -> *mut c_void {
-    if !maps(size) {
+    if !maps_from(size, MODEL_BLOCK) {
         // from the heap (as 2.2.2's): cleared only when the caller does not overwrite it
         return if overwrite {
             malloc(size)
@@ -143,7 +157,7 @@ pub fn alloc_model_block(size: usize, overwrite: bool) -> *mut c_void {
         }
         return ptr;
     }
-    alloc_large(size, overwrite)
+    map_block(size, overwrite)
 }
 
 /// The spare mapping's block when it holds `size` bytes and is at most twice as long.
@@ -164,17 +178,17 @@ fn take_spare(size: usize) -> Option<*mut c_void> {
 /// # Safety
 /// `ptr` is NULL or came from `alloc_model_block(size, _)` and was not freed.
 pub unsafe fn free_model_block(ptr: *mut c_void, size: usize) {
-    if ptr.is_null() || !maps(size) {
-        return free_large(ptr, size);
+    if ptr.is_null() || !maps_from(size, MODEL_BLOCK) {
+        return free(ptr);
     }
     let base = (ptr as *mut u8).sub(MAP_OFFSET);
     let len = (base as *const usize).read();
     if len > SPARE_MAX {
-        return free_large(ptr, size);
+        return unmap_block(ptr);
     }
     let old = match SPARE.lock() {
         Ok(mut slot) => slot.replace((base as usize, len)),
-        Err(_) => return free_large(ptr, size),
+        Err(_) => return unmap_block(ptr),
     };
     if let Some((b, l)) = old {
         libc::munmap(b as *mut c_void, l);
@@ -375,6 +389,14 @@ pub unsafe fn free_large(ptr: *mut c_void, size: usize) {
     if ptr.is_null() || !maps(size) {
         return free(ptr);
     }
+    unmap_block(ptr)
+}
+
+/// Unmaps a block from `map_block`.
+///
+/// # Safety
+/// `ptr` came from `map_block` and was not freed.
+unsafe fn unmap_block(ptr: *mut c_void) {
     let base = (ptr as *mut u8).sub(MAP_OFFSET);
     let len = (base as *const usize).read();
     libc::munmap(base as *mut c_void, len);
@@ -458,6 +480,35 @@ mod tests {
             assert!(bytes(100, size - 100).iter().all(|&b| b == 0));
             assert!(bytes(size - 100, size).iter().all(|&b| b == 9));
             free_large(block as *mut c_void, size);
+        }
+    }
+
+    /// A model buffer of a few hundred KB is mapped and kept when freed: the next one of about
+    /// its size takes the same pages, zeroed unless the caller overwrites them all.
+    #[test]
+    fn freed_model_buffer_is_taken_by_the_next() {
+        let size = 300 << 10;
+        assert!(maps_from(size, MODEL_BLOCK) && !maps(size));
+        let a = alloc_model_block(size, false) as *mut u8;
+        // SAFETY: all within blocks of `size` bytes from alloc_model_block, freed once each.
+        unsafe {
+            assert!(std::slice::from_raw_parts(a, size).iter().all(|&b| b == 0));
+            std::ptr::write_bytes(a, 7, size);
+            free_model_block(a as *mut c_void, size);
+            let b = alloc_model_block(size - 1000, false) as *mut u8;
+            assert_eq!(a, b, "the spare");
+            assert!(std::slice::from_raw_parts(b, size - 1000)
+                .iter()
+                .all(|&b| b == 0));
+            std::ptr::write_bytes(b, 7, size - 1000);
+            free_model_block(b as *mut c_void, size - 1000);
+            let c = alloc_model_block(size, true) as *mut u8;
+            assert_eq!(a, c, "the spare, not cleared");
+            assert_eq!(*c, 7);
+            free_model_block(c as *mut c_void, size);
+            // much smaller: a fresh block, the spare kept
+            let d = alloc_model_block(size / 3, false);
+            free_model_block(d, size / 3);
         }
     }
 

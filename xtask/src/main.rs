@@ -7,7 +7,10 @@
 //! - `uninstall --prefix DIR [--libdir lib]`: removes exactly what `install` wrote.
 //! - `deb`: a Debian package in target/debian/ that stands in for libmujoco2.2.2 and
 //!   libmujoco-dev.
-//! - `pgo`: records the profile the release build is optimized with (`pgo/rujoco.profdata`).
+//! - `pgo`: records the profile the release build is optimized with (`pgo/rujoco.profdata`),
+//!   then the function order (`order`).
+//! - `order`: records the order the shared library's functions are laid out in
+//!   (`pgo/symbol-order.txt`; needs valgrind).
 //! - `hwcaps`: builds the library again for x86-64-v3 (AVX2) beside target/release's, in
 //!   `glibc-hwcaps/x86-64-v3/`, where glibc's loader takes it on a CPU that has AVX2 (install
 //!   and deb build it and install it there too).
@@ -15,6 +18,7 @@
 //! `--no-build` takes target/release as it is (the tests use it).
 
 mod files;
+mod order;
 mod pgo;
 mod sources;
 
@@ -30,6 +34,7 @@ fn usage() -> ! {
          cargo xtask uninstall --prefix DIR [--libdir DIR]\n       \
          cargo xtask deb [--no-build]\n       \
          cargo xtask pgo\n       \
+         cargo xtask order\n       \
          cargo xtask hwcaps"
     );
     exit(2)
@@ -288,7 +293,11 @@ fn main() {
         Some("uninstall") => uninstall(&Layout::parse(&args[1..])),
         Some("deb") if args.len() == 1 => deb(false),
         Some("deb") if args.len() == 2 && args[1] == "--no-build" => deb(true),
-        Some("pgo") if args.len() == 1 => pgo::pgo(),
+        Some("pgo") if args.len() == 1 => {
+            pgo::pgo();
+            order::order();
+        }
+        Some("order") if args.len() == 1 => order::order(),
         Some("hwcaps") if args.len() == 1 => hwcaps(),
         _ => usage(),
     }
