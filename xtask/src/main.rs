@@ -21,6 +21,7 @@ mod files;
 mod order;
 mod pgo;
 mod sources;
+mod symbols;
 
 use std::path::{Path, PathBuf};
 use std::process::{exit, Command};

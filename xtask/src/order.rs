@@ -16,6 +16,7 @@ use std::collections::{HashMap, HashSet};
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
+use crate::symbols::text_symbols;
 use crate::{cargo, fail, must, root, target_dir};
 
 /// Driven steps of full physics per model (and half as many smooth).
@@ -52,7 +53,9 @@ pub fn order() {
     let lib = work.join("libmujoco.so.2.2.2");
     std::fs::copy(target_dir().join("release/libmujoco.so"), &lib)
         .unwrap_or_else(|e| fail("copying the library", e));
-    let layout = text_symbols(&lib);
+    let layout = text_symbols(&output(
+        Command::new("nm").args(["-n", "--defined-only"]).arg(&lib),
+    ));
     // the programs, against that copy: the MJB files come from capi-tests/loader.c
     let program = |name: &str| {
         let exe = work.join(name);
@@ -136,20 +139,6 @@ pub fn order() {
     std::fs::write(&file, lines.join("\n") + "\n")
         .unwrap_or_else(|e| fail("pgo/symbol-order.txt", e));
     println!("{}", file.display());
-}
-
-/// The function symbols of `lib` in its code (.text) by address.
-fn text_symbols(lib: &Path) -> Vec<String> {
-    let text = output(Command::new("nm").args(["-n", "--defined-only"]).arg(lib));
-    text.lines()
-        .filter_map(|l| {
-            let mut w = l.split_whitespace();
-            let (_, kind, name) = (w.next()?, w.next()?, w.next()?);
-            // _init and _fini have sections of their own
-            (matches!(kind, "t" | "T" | "W" | "w") && !matches!(name, "_init" | "_fini"))
-                .then(|| name.to_string())
-        })
-        .collect()
 }
 
 /// Standard output of `cmd`, which must succeed.
