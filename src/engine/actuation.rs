@@ -74,17 +74,23 @@ pub fn fwd_actuation(m: &Model, d: &mut Data) -> Result<(), EngineError> {
 
 /// mj_fwdActuation; `spans`: the moment rows are as `transmission` left them (zero outside
 /// `moment_span`), so that the force products skip their zeros.
+#[inline]
 pub fn actuation(m: &Model, d: &mut Data, spans: bool) -> Result<(), EngineError> {
     let start = super::now();
-    let nv = m.raw.nv as usize;
-    let nu = m.raw.nu as usize;
-    let na = m.raw.na as usize;
     d.qfrc_actuator.fill(0.0);
     d.actuator_force.fill(0.0);
     // act_dot is left as it was here, as in the reference
-    if nu == 0 || disabled(m, mjtDisableBit_::mjDSBL_ACTUATION) {
+    if m.raw.nu == 0 || disabled(m, mjtDisableBit_::mjDSBL_ACTUATION) {
         return Ok(());
     }
+    actuator_forces(m, d, spans, start)
+}
+
+#[inline(never)]
+fn actuator_forces(m: &Model, d: &mut Data, spans: bool, start: f64) -> Result<(), EngineError> {
+    let nv = m.raw.nv as usize;
+    let nu = m.raw.nu as usize;
+    let na = m.raw.na as usize;
     d.arena.scope(|a| -> Result<(), EngineError> {
         let ctrl = a.alloc_stale(nu)?;
         let noclamp = disabled(m, mjtDisableBit_::mjDSBL_CLAMPCTRL);

@@ -273,11 +273,9 @@ fn tendon_row(m: &Model, d: &Data, i: usize, jacobian: &mut [f64], chain: &mut [
 }
 
 /// Equality rows: connect (3), weld (6), joint or tendon coupling (1).
+#[inline(never)]
 fn equality(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> {
     let nv = m.raw.nv as usize;
-    if disabled(m, mjtDisableBit_::mjDSBL_EQUALITY) || m.raw.nemax == 0 {
-        return Ok(());
-    }
     let sparse = is_sparse(m);
     let j0 = a.alloc(6 * nv)?;
     let j1 = a.alloc(6 * nv)?;
@@ -763,7 +761,9 @@ pub fn make_constraint(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     }
     // each instantiation frees its scratch before the next (2.2.2's mark and free per call)
     with_arena(d, |d, a| -> Result<(), EngineError> {
-        a.scope(|a| equality(m, d, a))?;
+        if !disabled(m, mjtDisableBit_::mjDSBL_EQUALITY) && m.raw.nemax != 0 {
+            a.scope(|a| equality(m, d, a))?;
+        }
         a.scope(|a| friction(m, d, a))?;
         a.scope(|a| limits(m, d, a))?;
         a.scope(|a| super::contact::instantiate(m, d, a))
@@ -808,12 +808,18 @@ pub fn make_constraint(m: &Model, d: &mut Data) -> Result<(), EngineError> {
 }
 
 /// efc_AR = J M^-1 J' + diag(R) for dual solvers (mj_projectConstraint).
+#[inline]
 pub fn project_constraint(m: &Model, d: &mut Data) -> Result<(), EngineError> {
-    let nefc = d.raw.nefc as usize;
-    let nv = m.raw.nv as usize;
-    if nefc == 0 || !is_dual(m) {
+    if d.raw.nefc == 0 || !is_dual(m) {
         return Ok(());
     }
+    project_dual(m, d)
+}
+
+#[inline(never)]
+fn project_dual(m: &Model, d: &mut Data) -> Result<(), EngineError> {
+    let nefc = d.raw.nefc as usize;
+    let nv = m.raw.nv as usize;
     with_arena(d, |d, a| -> Result<(), EngineError> {
         let jm2 = a.alloc(nefc * nv)?;
         let jm2t = a.alloc(nv * nefc)?;
@@ -978,11 +984,17 @@ fn project_sparse(
 }
 
 /// efc_vel and efc_aref (mj_referenceConstraint).
+#[inline]
 pub fn reference_constraint(m: &Model, d: &mut Data) {
-    let nefc = d.raw.nefc as usize;
-    if nefc == 0 {
+    if d.raw.nefc == 0 {
         return;
     }
+    reference_acceleration(m, d)
+}
+
+#[inline(never)]
+fn reference_acceleration(m: &Model, d: &mut Data) {
+    let nefc = d.raw.nefc as usize;
     jac_view!(m, d).mul_vec(d.efc_vel, d.qvel);
     for i in 0..nefc {
         let k = &d.efc_KBIP[4 * i..4 * i + 4];

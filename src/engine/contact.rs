@@ -23,11 +23,17 @@ pub fn is_contact(kind: i32) -> bool {
 
 /// Rows of every contact not excluded; stops with the buffer-full warning when the next
 /// contact's rows do not fit.
+#[inline]
 pub fn instantiate(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> {
-    let ncon = d.raw.ncon.max(0) as usize;
-    if disabled(m, mjtDisableBit_::mjDSBL_CONTACT) || ncon == 0 {
+    if disabled(m, mjtDisableBit_::mjDSBL_CONTACT) || d.raw.ncon <= 0 {
         return Ok(());
     }
+    contact_rows(m, d, a)
+}
+
+#[inline(never)]
+fn contact_rows(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> {
+    let ncon = d.raw.ncon.max(0) as usize;
     let nv = m.raw.nv as usize;
     let pyramid = super::constraint::is_pyramidal(m);
     let sparse = super::constraint::is_sparse(m);

@@ -226,10 +226,16 @@ fn apply_local(
 }
 
 /// Adds the fluid forces of all bodies to qfrc_passive (density or viscosity > 0).
+#[inline]
 pub fn fluid(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     if !(m.raw.opt.viscosity > 0.0 || m.raw.opt.density > 0.0) {
         return Ok(());
     }
+    fluid_bodies(m, d)
+}
+
+#[inline(never)]
+fn fluid_bodies(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     for b in 1..m.raw.nbody as usize {
         if m.body_mass()[b] < MINVAL {
             continue;

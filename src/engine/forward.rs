@@ -191,7 +191,7 @@ pub fn fwd_constraint(m: &Model, d: &mut Data) -> Result<(), EngineError> {
 
 /// Resets and warns when qpos has a bad value (mj_checkPos).
 pub fn check_pos(m: &Model, d: &mut Data) -> Result<(), EngineError> {
-    if let Some(i) = d.qpos.iter().position(|&x| is_bad(x)) {
+    if let Some(i) = first_bad(d.qpos) {
         bad_state(m, d, mjtWarning_::mjWARN_BADQPOS, i)?;
     }
     Ok(())
@@ -199,7 +199,7 @@ pub fn check_pos(m: &Model, d: &mut Data) -> Result<(), EngineError> {
 
 /// Resets and warns when qvel has a bad value (mj_checkVel).
 pub fn check_vel(m: &Model, d: &mut Data) -> Result<(), EngineError> {
-    if let Some(i) = d.qvel.iter().position(|&x| is_bad(x)) {
+    if let Some(i) = first_bad(d.qvel) {
         bad_state(m, d, mjtWarning_::mjWARN_BADQVEL, i)?;
     }
     Ok(())
@@ -207,11 +207,20 @@ pub fn check_vel(m: &Model, d: &mut Data) -> Result<(), EngineError> {
 
 /// Resets, warns and recomputes when qacc has a bad value (mj_checkAcc).
 pub fn check_acc(m: &Model, d: &mut Data) -> Result<(), EngineError> {
-    if let Some(i) = d.qacc.iter().position(|&x| is_bad(x)) {
+    if let Some(i) = first_bad(d.qacc) {
         bad_state(m, d, mjtWarning_::mjWARN_BADQACC, i)?;
         forward(m, d)?;
     }
     Ok(())
+}
+
+/// Index of the first NaN or out-of-range value: a vectorized pass first, as mostly none is.
+#[inline]
+fn first_bad(x: &[f64]) -> Option<usize> {
+    if !x.iter().fold(false, |any, &v| any | is_bad(v)) {
+        return None;
+    }
+    x.iter().position(|&v| is_bad(v))
 }
 
 fn bad_state(m: &Model, d: &mut Data, kind: mjtWarning_, i: usize) -> Result<(), EngineError> {

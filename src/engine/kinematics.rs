@@ -209,7 +209,15 @@ pub fn com_pos(m: &Model, d: &mut Data) -> Result<(), EngineError> {
 
 /// Poses of cameras and lights, including tracking and targeting modes.
 /// `fixed` treats every camera and light as fixed (mj_setConst does this).
+#[inline]
 pub fn camlight(m: &Model, d: &mut Data, fixed: bool) {
+    if m.raw.ncam > 0 || m.raw.nlight > 0 {
+        cameras_lights(m, d, fixed);
+    }
+}
+
+#[inline(never)]
+fn cameras_lights(m: &Model, d: &mut Data, fixed: bool) {
     const TRACK: i32 = mjtCamLight_::mjCAMLIGHT_TRACK as i32;
     const TRACKCOM: i32 = mjtCamLight_::mjCAMLIGHT_TRACKCOM as i32;
     const TARGET: i32 = mjtCamLight_::mjCAMLIGHT_TARGETBODY as i32;

@@ -21,6 +21,7 @@ fn is(ty: i32, s: mjtSensor_) -> bool {
 }
 
 /// Object position and orientation of a frame sensor's object or reference.
+#[inline]
 fn frame<'d>(
     d: &'d Data,
     objtype: i32,
@@ -30,10 +31,14 @@ fn frame<'d>(
     let id = id.max(0) as usize;
     match frame_arrays(d, objtype) {
         Some((pos, mat)) => Ok((&pos[3 * id..3 * id + 3], &mat[9 * id..9 * id + 9])),
-        None => Err(EngineError(format!(
-            "Invalid object type in sensor {sensor}"
-        ))),
+        None => Err(invalid_object(sensor)),
     }
+}
+
+#[cold]
+#[inline(never)]
+fn invalid_object(sensor: usize) -> EngineError {
+    EngineError(format!("Invalid object type in sensor {sensor}"))
 }
 
 /// Global orientation of an object as a quaternion.
@@ -85,22 +90,29 @@ fn put_vec(d: &mut Data, adr: usize, v: &[f64]) {
 }
 
 /// Position-dependent sensors (mj_sensorPos).
+#[inline]
 pub fn sensor_pos(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     if disabled(m, mjtDisableBit_::mjDSBL_SENSOR) || m.raw.nsensor <= 0 {
         return Ok(());
     }
-    let mut after = StageEnd::default();
+    sensors_pos(m, d)
+}
+
+#[inline(never)]
+fn sensors_pos(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     // the geoms rangefinders see, taken at the first one (None: too many geoms, or none yet)
     let mut targets: Option<Option<Targets>> = None;
-    for i in 0..m.raw.nsensor as usize {
-        if m.sensor_needstage()[i] != POS {
+    let s = Sensors::of(m);
+    let mut after = StageEnd::default();
+    for i in 0..s.stage.len() {
+        if s.stage[i] != POS {
             continue;
         }
-        after.note(m, i);
-        let ty = m.sensor_type()[i];
-        let (objtype, objid) = (m.sensor_objtype()[i], m.sensor_objid()[i]);
-        let (reftype, refid) = (m.sensor_reftype()[i], m.sensor_refid()[i]);
-        let adr = m.sensor_adr()[i] as usize;
+        let ty = s.ty[i];
+        after.note(&s, i, ty);
+        let (objtype, objid) = (s.objtype[i], s.objid[i]);
+        let (reftype, refid) = (s.reftype[i], s.refid[i]);
+        let adr = s.adr[i] as usize;
         let id = objid.max(0) as usize;
         if is(ty, mjSENS_MAGNETOMETER) {
             let mat = row::<9>(d.site_xmat, id);
@@ -181,21 +193,28 @@ pub fn sensor_pos(m: &Model, d: &mut Data) -> Result<(), EngineError> {
 }
 
 /// Velocity-dependent sensors (mj_sensorVel).
+#[inline]
 pub fn sensor_vel(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     if disabled(m, mjtDisableBit_::mjDSBL_SENSOR) || m.raw.nsensor <= 0 {
         return Ok(());
     }
+    sensors_vel(m, d)
+}
+
+#[inline(never)]
+fn sensors_vel(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     let mut have_subtree = false;
+    let s = Sensors::of(m);
     let mut after = StageEnd::default();
-    for i in 0..m.raw.nsensor as usize {
-        if m.sensor_needstage()[i] != VEL {
+    for i in 0..s.stage.len() {
+        if s.stage[i] != VEL {
             continue;
         }
-        after.note(m, i);
-        let ty = m.sensor_type()[i];
-        let (objtype, objid) = (m.sensor_objtype()[i], m.sensor_objid()[i]);
-        let (reftype, refid) = (m.sensor_reftype()[i], m.sensor_refid()[i]);
-        let adr = m.sensor_adr()[i] as usize;
+        let ty = s.ty[i];
+        after.note(&s, i, ty);
+        let (objtype, objid) = (s.objtype[i], s.objid[i]);
+        let (reftype, refid) = (s.reftype[i], s.refid[i]);
+        let adr = s.adr[i] as usize;
         let id = objid.max(0) as usize;
         let site = mjtObj_::mjOBJ_SITE as i32;
         if !have_subtree
@@ -305,20 +324,27 @@ fn touch(m: &Model, d: &Data, site: usize) -> Result<f64, EngineError> {
 }
 
 /// Acceleration- and force-dependent sensors (mj_sensorAcc).
+#[inline]
 pub fn sensor_acc(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     if disabled(m, mjtDisableBit_::mjDSBL_SENSOR) || m.raw.nsensor <= 0 {
         return Ok(());
     }
+    sensors_acc(m, d)
+}
+
+#[inline(never)]
+fn sensors_acc(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     let mut have_rne = false;
+    let s = Sensors::of(m);
     let mut after = StageEnd::default();
-    for i in 0..m.raw.nsensor as usize {
-        if m.sensor_needstage()[i] != ACC {
+    for i in 0..s.stage.len() {
+        if s.stage[i] != ACC {
             continue;
         }
-        after.note(m, i);
-        let ty = m.sensor_type()[i];
-        let (objtype, objid) = (m.sensor_objtype()[i], m.sensor_objid()[i]);
-        let adr = m.sensor_adr()[i] as usize;
+        let ty = s.ty[i];
+        after.note(&s, i, ty);
+        let (objtype, objid) = (s.objtype[i], s.objid[i]);
+        let adr = s.adr[i] as usize;
         let id = objid.max(0) as usize;
         if !have_rne
             && !is(ty, mjSENS_TOUCH)
@@ -378,6 +404,34 @@ pub fn sensor_acc(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     finish_stage(m, d, ACC, after)
 }
 
+/// The sensor arrays the stages read, as slices taken once.
+struct Sensors<'m> {
+    stage: &'m [i32],
+    ty: &'m [i32],
+    objtype: &'m [i32],
+    objid: &'m [i32],
+    reftype: &'m [i32],
+    refid: &'m [i32],
+    adr: &'m [i32],
+    cutoff: &'m [f64],
+}
+
+impl<'m> Sensors<'m> {
+    fn of(m: &'m Model) -> Self {
+        let n = m.raw.nsensor.max(0) as usize;
+        Sensors {
+            stage: &m.sensor_needstage()[..n],
+            ty: &m.sensor_type()[..n],
+            objtype: &m.sensor_objtype()[..n],
+            objid: &m.sensor_objid()[..n],
+            reftype: &m.sensor_reftype()[..n],
+            refid: &m.sensor_refid()[..n],
+            adr: &m.sensor_adr()[..n],
+            cutoff: &m.sensor_cutoff()[..n],
+        }
+    }
+}
+
 /// What a stage's sensors need after they are computed, noted as the stage visits them.
 #[derive(Default, Clone, Copy)]
 struct StageEnd {
@@ -386,9 +440,10 @@ struct StageEnd {
 }
 
 impl StageEnd {
-    fn note(&mut self, m: &Model, i: usize) {
-        self.user |= m.sensor_type()[i] == mjtSensor_::mjSENS_USER as i32;
-        self.cutoff |= m.sensor_cutoff()[i] > 0.0;
+    #[inline(always)]
+    fn note(&mut self, s: &Sensors, i: usize, ty: i32) {
+        self.user |= ty == mjSENS_USER as i32;
+        self.cutoff |= s.cutoff[i] > 0.0;
     }
 }
 

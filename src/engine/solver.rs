@@ -63,17 +63,23 @@ fn save_stats(
 }
 
 /// mj_fwdConstraint: qacc, efc_force and qfrc_constraint from the selected solver.
+#[inline]
 pub fn fwd_constraint(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     let start = super::now();
-    let nv = m.raw.nv as usize;
-    let nefc = d.raw.nefc as usize;
-    if nefc == 0 {
+    if d.raw.nefc == 0 {
         d.qacc.copy_from_slice(d.qacc_smooth);
         d.qacc_warmstart.copy_from_slice(d.qacc_smooth);
         d.qfrc_constraint.fill(0.0);
         d.raw.solver_iter = 0;
         return Ok(());
     }
+    solve_constraints(m, d, start)
+}
+
+#[inline(never)]
+fn solve_constraints(m: &Model, d: &mut Data, start: f64) -> Result<(), EngineError> {
+    let nv = m.raw.nv as usize;
+    let nefc = d.raw.nefc as usize;
     jac_view!(m, d).mul_vec(d.efc_b, d.qacc_smooth);
     for i in 0..nefc {
         d.efc_b[i] -= d.efc_aref[i];

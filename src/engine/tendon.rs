@@ -33,11 +33,17 @@ fn sort_row(ind: &mut [i32], val: &mut [f64]) {
 }
 
 /// ten_length, ten_J (dense, or sparse rows), ten_wrapadr/num, wrap_obj, wrap_xpos.
+#[inline]
 pub fn tendon(m: &Model, d: &mut Data) -> Result<(), EngineError> {
-    let nten = m.raw.ntendon as usize;
-    if nten == 0 {
+    if m.raw.ntendon == 0 {
         return Ok(());
     }
+    tendon_paths(m, d)
+}
+
+#[inline(never)]
+fn tendon_paths(m: &Model, d: &mut Data) -> Result<(), EngineError> {
+    let nten = m.raw.ntendon as usize;
     let nv = m.raw.nv as usize;
     let sparse = is_sparse(m);
     let (wtype, wobj, wprm) = (m.wrap_type(), m.wrap_objid(), m.wrap_prm());

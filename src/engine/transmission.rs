@@ -51,12 +51,18 @@ struct Kin<'k> {
 }
 
 /// actuator_length and actuator_moment (mj_transmission).
+#[inline]
 pub fn transmission(m: &Model, d: &mut Data) -> Result<(), EngineError> {
-    let nu = m.raw.nu as usize;
-    let nv = m.raw.nv as usize;
-    if nu == 0 {
+    if m.raw.nu == 0 {
         return Ok(());
     }
+    actuator_transmission(m, d)
+}
+
+#[inline(never)]
+fn actuator_transmission(m: &Model, d: &mut Data) -> Result<(), EngineError> {
+    let nu = m.raw.nu as usize;
+    let nv = m.raw.nv as usize;
     let trntype = &m.actuator_trntype()[..nu];
     if trntype
         .iter()

@@ -10,7 +10,8 @@ pub fn unit_quat() -> Quat {
 
 #[inline]
 fn is_unit(q: &Quat) -> bool {
-    q[0] == 1.0 && q[1] == 0.0 && q[2] == 0.0 && q[3] == 0.0
+    // all four compares, no early exit: one vector compare
+    (q[0] == 1.0) & (q[1] == 0.0) & (q[2] == 0.0) & (q[3] == 0.0)
 }
 
 /// Hamilton product qa * qb.

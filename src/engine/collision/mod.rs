@@ -370,16 +370,22 @@ fn add_contact(m: &Model, d: &mut Data, con: mjContact) -> Result<bool, EngineEr
 }
 
 /// mj_collision: fills d.contact and d.ncon.
+#[inline]
 pub fn collision(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     d.raw.ncon = 0;
-    let nbody = m.raw.nbody as usize;
     if disabled(m, mjtDisableBit_::mjDSBL_CONSTRAINT)
         || disabled(m, mjtDisableBit_::mjDSBL_CONTACT)
         || m.raw.nconmax == 0
-        || nbody < 2
+        || m.raw.nbody < 2
     {
         return Ok(());
     }
+    collide_all(m, d)
+}
+
+#[inline(never)]
+fn collide_all(m: &Model, d: &mut Data) -> Result<(), EngineError> {
+    let nbody = m.raw.nbody as usize;
     let npair = m.raw.npair.max(0) as usize;
     // colliders write every field of the contacts they report, so one buffer serves all pairs
     let mut con = [ContactGeom::default(); narrow::MAX_CONTACT_PAIR];
