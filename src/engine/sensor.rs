@@ -89,10 +89,16 @@ fn put_vec(d: &mut Data, adr: usize, v: &[f64]) {
     d.sensordata[adr..adr + v.len()].copy_from_slice(v);
 }
 
+/// Sensors disabled, or none in the model: each stage returns at once.
+#[inline]
+fn no_sensors(m: &Model) -> bool {
+    disabled(m, mjtDisableBit_::mjDSBL_SENSOR) || m.raw.nsensor <= 0
+}
+
 /// Position-dependent sensors (mj_sensorPos).
 #[inline]
 pub fn sensor_pos(m: &Model, d: &mut Data) -> Result<(), EngineError> {
-    if disabled(m, mjtDisableBit_::mjDSBL_SENSOR) || m.raw.nsensor <= 0 {
+    if no_sensors(m) {
         return Ok(());
     }
     sensors_pos(m, d)
@@ -195,7 +201,7 @@ fn sensors_pos(m: &Model, d: &mut Data) -> Result<(), EngineError> {
 /// Velocity-dependent sensors (mj_sensorVel).
 #[inline]
 pub fn sensor_vel(m: &Model, d: &mut Data) -> Result<(), EngineError> {
-    if disabled(m, mjtDisableBit_::mjDSBL_SENSOR) || m.raw.nsensor <= 0 {
+    if no_sensors(m) {
         return Ok(());
     }
     sensors_vel(m, d)
@@ -326,7 +332,7 @@ fn touch(m: &Model, d: &Data, site: usize) -> Result<f64, EngineError> {
 /// Acceleration- and force-dependent sensors (mj_sensorAcc).
 #[inline]
 pub fn sensor_acc(m: &Model, d: &mut Data) -> Result<(), EngineError> {
-    if disabled(m, mjtDisableBit_::mjDSBL_SENSOR) || m.raw.nsensor <= 0 {
+    if no_sensors(m) {
         return Ok(());
     }
     sensors_acc(m, d)

@@ -176,31 +176,22 @@ fn llvm_profdata() -> (PathBuf, String) {
     (tool, major)
 }
 
-/// The model trees of the packages `capi-tests/run-all` fetches into target/third-party, as
-/// it adds them to the corpus: the mesh-heavy arms, grippers and hands are among them.
-const THIRD_PARTY: [&str; 12] = [
-    "dm_control-1.0.7/dm_control/mjcf",
-    "dm_control-1.0.7/dm_control/mujoco/testing",
-    "dm_control-1.0.7/dm_control/composer",
-    "dm_control-1.0.7/dm_control/locomotion",
-    "dm_control-1.0.7/dm_control/third_party",
-    "dm_control-1.0.7/dm_control/entities",
-    "gymnasium-0.29.1/gymnasium/envs/mujoco/assets",
-    "gymnasium-robotics-1.2.4/gymnasium_robotics/envs/assets",
-    "robosuite-1.4.1/robosuite/models/assets",
-    "metaworld-3.1.1/metaworld/assets",
-    "dexterity-0.0.15/dexterity/models",
-    "myosuite-3.0.0/myosuite",
-];
-
 /// The MJCF files the profile is recorded on, sorted: `RUJOCO_CORPUS`, else the corpus the
-/// test suite runs (../shared/corpus and the fetched packages).
+/// test suite runs: ../shared/corpus and the model trees of the packages `capi-tests/run-all`
+/// fetches into target/third-party (capi-tests/corpus-dirs.txt, run-all's list; the mesh-heavy
+/// arms, grippers and hands are among them).
 fn models(root: &Path) -> Vec<PathBuf> {
     let corpus: Vec<PathBuf> = match std::env::var_os("RUJOCO_CORPUS") {
         Some(v) => std::env::split_paths(&v).collect(),
         None => {
             let tp = target_dir().join("third-party");
-            let fetched: Vec<PathBuf> = THIRD_PARTY.iter().map(|d| tp.join(d)).collect();
+            let list = std::fs::read_to_string(root.join("capi-tests/corpus-dirs.txt"))
+                .unwrap_or_else(|e| fail("capi-tests/corpus-dirs.txt", e));
+            let fetched: Vec<PathBuf> = list
+                .lines()
+                .filter(|l| !l.is_empty() && !l.starts_with('#'))
+                .map(|d| tp.join(d))
+                .collect();
             if !fetched.iter().any(|d| d.is_dir()) {
                 eprintln!(
                     "xtask: no packages in {}: the profile leaves out the models \
