@@ -4,8 +4,10 @@ use super::vfs::{self, Vfs};
 use crate::abi::mjb::LoadError;
 use crate::abi::owned::ModelBox;
 
-/// Largest MJB file read through a buffer of one page.
+/// Largest MJB file read through a buffer of one page (`PAGE`); larger ones through `LARGE`.
 const SMALL_FILE: usize = 1 << 18;
+const PAGE: usize = 4096;
+const LARGE: usize = 1 << 16;
 
 /// The model in MJB file `filename` (from the VFS, else disk); errors are 2.2.2's warnings and
 /// errors.
@@ -23,8 +25,8 @@ pub fn load_file(filename: &str, vfs: Option<&Vfs>) -> Result<ModelBox, LoadErro
             // a small file through a page of buffer, as stdio reads it: arrays of a page or
             // more go straight from the file, and a fresh process's first load faults in
             // fewer new pages (a buffer the size of a 27 kB file took a fifth of its load)
-            let page = if len <= SMALL_FILE { 4096 } else { 1 << 16 };
-            let mut src = std::io::BufReader::with_capacity(page, file);
+            let capacity = if len <= SMALL_FILE { PAGE } else { LARGE };
+            let mut src = std::io::BufReader::with_capacity(capacity, file);
             ModelBox::from_mjb_reader(&mut src, len, false)
         }
         // a pipe or a device read through once; what a read error leaves is what was read,
