@@ -14,21 +14,27 @@ fn pad(offset: usize) -> usize {
     (ALIGN - offset % ALIGN) % ALIGN
 }
 
-/// Total buffer size of rows `(elem size, count)`, or None on overflow.
-fn buffer_size(rows: impl Iterator<Item = (usize, usize)>) -> Option<usize> {
-    let mut size: usize = 0;
-    for (elem, count) in rows {
-        size = size
-            .checked_add(pad(size))?
-            .checked_add(elem.checked_mul(count)?)?;
-    }
-    (size <= i32::MAX as usize).then_some(size)
+/// `size` (a buffer's bytes so far) grown by a row of `count` elements of `elem` bytes on the
+/// next 64-byte boundary, or None on overflow.
+#[inline(never)]
+fn grow(size: usize, elem: usize, count: usize) -> Option<usize> {
+    size.checked_add(pad(size))?
+        .checked_add(elem.checked_mul(count)?)
+}
+
+/// A buffer's total bytes, or None past i32 (`size` None: an overflow).
+fn within_i32(size: Option<usize>) -> Option<usize> {
+    size.filter(|&s| s <= i32::MAX as usize)
 }
 
 macro_rules! model_rows {
     ($(($t:ident, $name:ident, $d1:ident, $($d2:tt)+)),* $(,)?) => {
-        fn model_rows(m: &mjModel) -> Vec<(&'static str, usize, usize)> {
-            vec![$((stringify!($name), std::mem::size_of::<elem_ty!($t)>(), row_len!(m, $d1, $($d2)+)),)*]
+        /// Bytes of the buffer of a model of these sizes (no list of rows: a fresh
+        /// process's first load faults in every new page it allocates).
+        fn model_buffer_bytes(m: &mjModel) -> Option<usize> {
+            let size = Some(0);
+            $(let size = grow(size?, std::mem::size_of::<elem_ty!($t)>(), row_len!(m, $d1, $($d2)+));)*
+            within_i32(size)
         }
         /// Number of arrays of mjModel.
         const MODEL_NPTR: usize = [$(stringify!($name)),*].len();
@@ -67,6 +73,12 @@ macro_rules! data_rows {
         fn data_rows(m: &mjModel) -> Vec<(&'static str, usize, usize)> {
             vec![$((stringify!($name), std::mem::size_of::<elem_ty!($t)>(), row_len!(m, $d1, $($d2)+)),)*]
         }
+        /// Bytes of the arrays of a data of model `m` (as `model_buffer_bytes`).
+        fn data_buffer_bytes(m: &mjModel) -> Option<usize> {
+            let size = Some(0);
+            $(let size = grow(size?, std::mem::size_of::<elem_ty!($t)>(), row_len!(m, $d1, $($d2)+));)*
+            within_i32(size)
+        }
         unsafe fn set_data_pointers(m: &mjModel, d: &mut mjData) {
             let base = d.buffer as *mut u8;
             let mut off = 0usize;
@@ -98,8 +110,8 @@ mjdata_pointers!(data_rows);
 macro_rules! model_int_names {
     ($(($name:ident)),* $(,)?) => {
         /// The int fields of mjModel in X-macro order, with their values.
-        pub fn model_ints(m: &mjModel) -> Vec<(&'static str, i32)> {
-            vec![$((stringify!($name), m.$name),)*]
+        pub fn model_ints(m: &mjModel) -> [(&'static str, i32); MODEL_NINT] {
+            [$((stringify!($name), m.$name),)*]
         }
         /// Number of int fields of mjModel.
         const MODEL_NINT: usize = [$(stringify!($name)),*].len();
@@ -124,9 +136,7 @@ pub fn make_model(sizes: &mjModel, overwrite: bool) -> Result<*mut mjModel, Stri
     if sizes.nmocap >= i32::MAX / 4 {
         return Err("Invalid model: nmocap too large".into());
     }
-    let rows = model_rows(sizes);
-    let nbuffer =
-        buffer_size(rows.iter().map(|r| (r.1, r.2))).ok_or("Invalid model: buffer too large")?;
+    let nbuffer = model_buffer_bytes(sizes).ok_or("Invalid model: buffer too large")?;
     // SAFETY: all-zero bits are a valid mjModel (null pointers, zero numbers).
     let mut header: mjModel = unsafe { std::mem::zeroed() };
     copy_ints(&mut header, sizes);
@@ -198,7 +208,7 @@ pub unsafe fn copy_model(dest: *mut mjModel, src: &mjModel) -> Result<*mut mjMod
 
 /// Size of the MJB image of a model, as `mj_sizeModel` reports it.
 pub fn size_model(m: &mjModel) -> i32 {
-    let nint = model_ints(m).len();
+    let nint = MODEL_NINT;
     (std::mem::size_of::<i32>() * (4 + nint)
         + std::mem::size_of::<mjOption>()
         + std::mem::size_of::<mjVisual>()
@@ -208,9 +218,7 @@ pub fn size_model(m: &mjModel) -> i32 {
 
 /// Allocates data for `m`; its contents are undefined until reset.
 pub fn alloc_data(m: &mjModel) -> Result<*mut mjData, String> {
-    let rows = data_rows(m);
-    let nbuffer =
-        buffer_size(rows.iter().map(|r| (r.1, r.2))).ok_or("Invalid data: buffer too large")?;
+    let nbuffer = data_buffer_bytes(m).ok_or("Invalid data: buffer too large")?;
     let nstack = m.nstack.max(0) as usize;
     let d = malloc(std::mem::size_of::<mjData>()) as *mut mjData;
     // both zeroed, so that no view ever reads uninitialized memory (scratch taken unzeroed by

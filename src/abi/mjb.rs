@@ -12,6 +12,13 @@ fn bytes_of<T>(v: &T) -> &[u8] {
     unsafe { std::slice::from_raw_parts(v as *const T as *const u8, std::mem::size_of::<T>()) }
 }
 
+/// The same, to be read into (no copy through the heap).
+fn bytes_of_mut<T>(v: &mut T) -> &mut [u8] {
+    // SAFETY: T accepts any bit pattern of its fields (numbers); callers use it only for
+    // mjOption, mjVisual, mjStatistic and mjModel's int prefix.
+    unsafe { std::slice::from_raw_parts_mut(v as *mut T as *mut u8, std::mem::size_of::<T>()) }
+}
+
 fn header() -> [i32; 4] {
     let (nint, nptr) = model_counts();
     [
@@ -130,26 +137,12 @@ impl<R: std::io::Read> Reader<'_, R> {
         self.pos += dst.len();
         Ok(())
     }
-
-    /// The next `n` bytes, as `read`.
-    fn take(&mut self, n: usize, what: &str) -> Result<Vec<u8>, LoadError> {
-        let mut v = vec![0; n];
-        self.read(&mut v, what)?;
-        Ok(v)
-    }
-}
-
-/// Copies `src` over the bytes of a plain ABI struct.
-fn fill<T>(dst: &mut T, src: &[u8]) {
-    // SAFETY: src has exactly size_of::<T>() bytes and T accepts any bit pattern of its fields
-    // (numbers); callers use it only for mjOption, mjVisual, mjStatistic and int prefixes.
-    unsafe { std::ptr::copy_nonoverlapping(src.as_ptr(), dst as *mut T as *mut u8, src.len()) }
 }
 
 /// Parses an MJB image (a file's contents, or a memory buffer when `buffer`) into a new model;
 /// errors carry 2.2.2's texts. A buffer may hold more than the model, as 2.2.2 reads it.
 pub fn load(data: &[u8], buffer: bool) -> Result<*mut mjModel, LoadError> {
-    let mut src = data;
+    let mut src = crate::runtime::copy::SliceReader(data);
     load_from(&mut src, data.len(), buffer)
 }
 
@@ -168,7 +161,8 @@ pub fn load_from<R: std::io::Read>(
         pos: 0,
         buffer,
     };
-    let head = r.take(16, "Model file has an incomplete header")?;
+    let mut head = [0u8; 16];
+    r.read(&mut head, "Model file has an incomplete header")?;
     let expected = header();
     let msgs = [
         "Model missing header ID",
@@ -182,10 +176,12 @@ pub fn load_from<R: std::io::Read>(
             return Err(warn(msgs[i]));
         }
     }
-    let ints = r.take(nint * 4, "Model file does not contain enough ints")?;
     // SAFETY: all-zero bits are a valid mjModel; only the int prefix is filled.
     let mut sizes: mjModel = unsafe { std::mem::zeroed() };
-    fill(&mut sizes, &ints);
+    r.read(
+        &mut bytes_of_mut(&mut sizes)[..nint * 4],
+        "Model file does not contain enough ints",
+    )?;
     let m = make_model(&sizes, true).map_err(|_| warn("Corrupted model, wrong size parameters"))?;
     // SAFETY: m is a fresh model; its buffer has nbuffer bytes.
     unsafe {
@@ -195,27 +191,18 @@ pub fn load_from<R: std::io::Read>(
             return Err(warn("Corrupted model, wrong size parameters"));
         }
         let result = (|| -> Result<(), LoadError> {
-            fill(
-                &mut mm.opt,
-                &r.take(
-                    std::mem::size_of::<mjOption>(),
-                    "Model file does not have a complete mjOption",
-                )?,
-            );
-            fill(
-                &mut mm.vis,
-                &r.take(
-                    std::mem::size_of::<mjVisual>(),
-                    "Model file does not have a complete mjVisual",
-                )?,
-            );
-            fill(
-                &mut mm.stat,
-                &r.take(
-                    std::mem::size_of::<mjStatistic>(),
-                    "Model file does not have a complete mjStatistic",
-                )?,
-            );
+            r.read(
+                bytes_of_mut(&mut mm.opt),
+                "Model file does not have a complete mjOption",
+            )?;
+            r.read(
+                bytes_of_mut(&mut mm.vis),
+                "Model file does not have a complete mjVisual",
+            )?;
+            r.read(
+                bytes_of_mut(&mut mm.stat),
+                "Model file does not have a complete mjStatistic",
+            )?;
             let buf = std::slice::from_raw_parts_mut(mm.buffer as *mut u8, mm.nbuffer as usize);
             // the arrays, and zeros between them (the buffer may hold an old model's bytes)
             let mut end = 0;

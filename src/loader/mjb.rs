@@ -4,11 +4,6 @@ use super::vfs::{self, Vfs};
 use crate::abi::mjb::LoadError;
 use crate::abi::owned::ModelBox;
 
-/// Largest MJB file read through a buffer of one page (`PAGE`); larger ones through `LARGE`.
-const SMALL_FILE: usize = 1 << 18;
-const PAGE: usize = 4096;
-const LARGE: usize = 1 << 16;
-
 /// The model in MJB file `filename` (from the VFS, else disk); errors are 2.2.2's warnings and
 /// errors.
 pub fn load_file(filename: &str, vfs: Option<&Vfs>) -> Result<ModelBox, LoadError> {
@@ -18,16 +13,13 @@ pub fn load_file(filename: &str, vfs: Option<&Vfs>) -> Result<ModelBox, LoadErro
         return ModelBox::from_mjb(&bytes, buffer);
     }
     let mut file = std::fs::File::open(filename).map_err(|_| cannot_open())?;
-    match file.metadata() {
+    match crate::runtime::file::regular_size(&file) {
         // a regular file is read straight into the model's arrays
-        Ok(meta) if meta.is_file() => {
-            let len = meta.len() as usize;
-            // a small file through a page of buffer, as stdio reads it: arrays of a page or
-            // more go straight from the file, and a fresh process's first load faults in
-            // fewer new pages (a buffer the size of a 27 kB file took a fifth of its load)
-            let capacity = if len <= SMALL_FILE { PAGE } else { LARGE };
-            let mut src = std::io::BufReader::with_capacity(capacity, file);
-            ModelBox::from_mjb_reader(&mut src, len, false)
+        Some(len) => {
+            // through a page of buffer, as stdio reads it: a fresh process's first load faults
+            // in fewer new pages (a buffer the size of a 27 kB file took a fifth of its load)
+            let mut src = crate::runtime::file::FileReader::new(file);
+            ModelBox::from_mjb_reader(&mut src, len as usize, false)
         }
         // a pipe or a device read through once; what a read error leaves is what was read,
         // as 2.2.2's fread (a directory opens and reads nothing: an incomplete header)

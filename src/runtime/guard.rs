@@ -42,15 +42,36 @@ pub fn catch_explained<R>(
 }
 
 /// Installs (once) a panic hook that stays silent for panics `catch` reports, and defers to
-/// the previous hook for any other panic.
+/// the previous hook for any other panic. A flag rather than `std::sync::Once`: its slow path
+/// reads a jump table, one more page a fresh process faults in on its first call.
 fn quiet_panics() {
-    static ONCE: std::sync::Once = std::sync::Once::new();
-    ONCE.call_once(|| {
+    use std::sync::atomic::{AtomicU8, Ordering};
+    const UNSET: u8 = 0;
+    const SETTING: u8 = 1;
+    const SET: u8 = 2;
+    static STATE: AtomicU8 = AtomicU8::new(UNSET);
+    if STATE.load(Ordering::Acquire) == SET {
+        return;
+    }
+    // set_hook panics on a panicking thread: that one goes on without
+    if std::thread::panicking() {
+        return;
+    }
+    if STATE
+        .compare_exchange(UNSET, SETTING, Ordering::Acquire, Ordering::Acquire)
+        .is_ok()
+    {
         let previous = std::panic::take_hook();
         std::panic::set_hook(Box::new(move |info| {
             if GUARDED.with(|g| g.get()) == 0 {
                 previous(info);
             }
         }));
-    });
+        STATE.store(SET, Ordering::Release);
+        return;
+    }
+    // another thread is installing it
+    while STATE.load(Ordering::Acquire) != SET {
+        std::hint::spin_loop();
+    }
 }

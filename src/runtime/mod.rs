@@ -4,6 +4,8 @@
 #![allow(non_upper_case_globals)]
 
 pub mod callbacks;
+pub mod copy;
+pub mod file;
 pub mod guard;
 pub mod memory;
 pub mod message;
