@@ -22,19 +22,22 @@ fn grow(size: usize, elem: usize, count: usize) -> Option<usize> {
         .checked_add(elem.checked_mul(count)?)
 }
 
-/// A buffer's total bytes, or None past i32 (`size` None: an overflow).
-fn within_i32(size: Option<usize>) -> Option<usize> {
-    size.filter(|&s| s <= i32::MAX as usize)
+/// Bytes of a buffer of X-macro rows for sizes `m`, or None on overflow or past i32 (summed
+/// row by row, with no list of rows: a fresh process's first load faults in every new page
+/// it allocates).
+macro_rules! buffer_bytes {
+    ($m:ident; $(($t:ident, $d1:ident, $($d2:tt)+))*) => {{
+        let size = Some(0);
+        $(let size = grow(size?, std::mem::size_of::<elem_ty!($t)>(), row_len!($m, $d1, $($d2)+));)*
+        size.filter(|&s| s <= i32::MAX as usize)
+    }};
 }
 
 macro_rules! model_rows {
     ($(($t:ident, $name:ident, $d1:ident, $($d2:tt)+)),* $(,)?) => {
-        /// Bytes of the buffer of a model of these sizes (no list of rows: a fresh
-        /// process's first load faults in every new page it allocates).
+        /// Bytes of the buffer of a model of these sizes.
         fn model_buffer_bytes(m: &mjModel) -> Option<usize> {
-            let size = Some(0);
-            $(let size = grow(size?, std::mem::size_of::<elem_ty!($t)>(), row_len!(m, $d1, $($d2)+));)*
-            within_i32(size)
+            buffer_bytes!(m; $(($t, $d1, $($d2)+))*)
         }
         /// Number of arrays of mjModel.
         const MODEL_NPTR: usize = [$(stringify!($name)),*].len();
@@ -73,11 +76,9 @@ macro_rules! data_rows {
         fn data_rows(m: &mjModel) -> Vec<(&'static str, usize, usize)> {
             vec![$((stringify!($name), std::mem::size_of::<elem_ty!($t)>(), row_len!(m, $d1, $($d2)+)),)*]
         }
-        /// Bytes of the arrays of a data of model `m` (as `model_buffer_bytes`).
+        /// Bytes of the arrays of a data of model `m`.
         fn data_buffer_bytes(m: &mjModel) -> Option<usize> {
-            let size = Some(0);
-            $(let size = grow(size?, std::mem::size_of::<elem_ty!($t)>(), row_len!(m, $d1, $($d2)+));)*
-            within_i32(size)
+            buffer_bytes!(m; $(($t, $d1, $($d2)+))*)
         }
         unsafe fn set_data_pointers(m: &mjModel, d: &mut mjData) {
             let base = d.buffer as *mut u8;

@@ -9,9 +9,12 @@
 /// Bytes in a piece: below glibc's `rep movsb` threshold (2112 by default on x86-64).
 const PIECE: usize = 2048;
 
+/// The period of the slow alignment: a page.
+pub const PAGE: usize = 4096;
+
 /// Whether a copy to `dst` from `src` (addresses or file offsets) is at the slow alignment.
 pub fn slow(dst: usize, src: usize) -> bool {
-    (1..16).contains(&(dst.wrapping_sub(src) & 4095))
+    (1..16).contains(&(dst.wrapping_sub(src) & (PAGE - 1)))
 }
 
 /// `dst.copy_from_slice(src)`, in pieces where a single copy would be at the slow alignment.

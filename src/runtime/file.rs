@@ -3,7 +3,7 @@
 use std::io::Read;
 use std::os::fd::AsRawFd;
 
-use super::copy;
+use super::copy::{self, PAGE};
 
 /// The size of `file` where it is a regular file. Asked through fstat: std's metadata asks
 /// statx with an empty path, a string the kernel reads from this library's constants (one more
@@ -16,8 +16,6 @@ pub fn regular_size(file: &std::fs::File) -> Option<u64> {
     }
     (st.st_mode & libc::S_IFMT == libc::S_IFREG).then_some(st.st_size as u64)
 }
-
-const PAGE: usize = 4096;
 
 /// Bytes of the space a long read at the slow alignment goes through.
 const BOUNCE: usize = 16 * PAGE;
