@@ -1,11 +1,14 @@
 //! The geom pairs of a body pair that may touch, found without branching on each pair: most
 //! fail the masks or the bounding-sphere test, in no pattern a branch predictor learns. Used
 //! when no user contact filter is to see every pair (one that a warning handler sets while a
-//! body pair is being tested sees pairs from the next one); collide_geoms still makes the exact
+//! body pair is being tested sees pairs from the next one); the candidates then pass the
+//! face-axis tests of the two bodies' frames (`body_frame`), and collide_geoms makes the exact
 //! tests.
 
+use super::body_frame::{Frames, MAX_GEOMS};
 use super::spheres::{beyond, Spheres};
-use super::{assign_margin, can_pair, clearly_beyond, collide_geoms, narrow, Contacts, Source};
+use super::{assign_margin, can_pair, clearly_beyond, collide_geoms, narrow, Buffer, Source};
+use crate::abi::mjtEnableBit_;
 use crate::engine::linalg::row;
 use crate::engine::{Data, EngineError, Model};
 use crate::math::misc::max;
@@ -26,6 +29,14 @@ pub(super) fn enabled() -> bool {
 }
 
 #[cfg(test)]
+fn frame_skipped() {
+    super::tests::FRAME_SKIPS.with(|n| n.set(n.get() + 1));
+}
+#[cfg(not(test))]
+#[inline(always)]
+fn frame_skipped() {}
+
+#[cfg(test)]
 fn skipped() {
     super::tests::SPHERE_SKIPS.with(|n| n.set(n.get() + 1));
 }
@@ -44,7 +55,8 @@ pub(super) fn collide_bodies(
     geoms1: std::ops::Range<usize>,
     geoms2: std::ops::Range<usize>,
     spheres: &mut Spheres,
-    con: &mut Contacts,
+    frames: &mut Option<Frames>,
+    con: &mut Buffer,
 ) -> Result<(), EngineError> {
     let s2 = spheres.get(m, d, b2);
     if let (Some(s1), Some(s2)) = (spheres.get(m, d, b1), s2) {
@@ -57,7 +69,11 @@ pub(super) fn collide_bodies(
     let masks2 = geoms2
         .clone()
         .fold((0, 0), |(t, a), g| (t | contype[g], a | conaffinity[g]));
-    for g1 in geoms1 {
+    // (in one block of 64, from the body's first geom)
+    let framed = geoms1.len() <= MAX_GEOMS && geoms2.len() <= MAX_GEOMS;
+    // the bodies' frames, emptied when a pair first needs them
+    let mut reset = false;
+    for g1 in geoms1.clone() {
         // a geom that pairs with none of the other body's geoms, or is far from all
         if !can_pair((contype[g1], conaffinity[g1]), masks2) {
             continue;
@@ -71,6 +87,14 @@ pub(super) fn collide_bodies(
         }
         for base in geoms2.clone().step_by(64) {
             let mut bits = candidates(m, d, g1, base..geoms2.end.min(base + 64));
+            if bits != 0 && framed {
+                let frames = frames.get_or_insert_with(Frames::new);
+                if !reset {
+                    frames.reset(d, (b1, b2), (geoms1.start, geoms2.start));
+                    reset = true;
+                }
+                bits = pairs_not_apart(m, d, g1 - geoms1.start, bits, frames);
+            }
             while bits != 0 {
                 let g2 = base + bits.trailing_zeros() as usize;
                 bits &= bits - 1;
@@ -80,6 +104,32 @@ pub(super) fn collide_bodies(
         }
     }
     Ok(())
+}
+
+/// The candidate bits of geom i of the first body (bits: geoms of the second from its first)
+/// that the face-axis tests in the two bodies' frames leave: a pair apart in either gives no
+/// contact.
+fn pairs_not_apart(m: &Model, d: &Data, i: usize, bits: u64, frames: &mut Frames) -> u64 {
+    let margins = m.geom_margin();
+    let [f1, f2] = &mut frames.0;
+    let (start1, start2) = f1.start();
+    let mut kept = bits;
+    let mut rest = bits;
+    while rest != 0 {
+        let j = rest.trailing_zeros() as usize;
+        rest &= rest - 1;
+        let (m1, m2) = (margins[start1 + i], margins[start2 + j]);
+        // (a NaN margin, which collide_geoms may take in one order, makes no test)
+        if m1.is_nan() || m2.is_nan() {
+            continue;
+        }
+        let margin = assign_margin(m, max(m1, m2));
+        if f1.apart(m, d, i, j, margin) || f2.apart(m, d, j, i, margin) {
+            frame_skipped();
+            kept &= !(1 << j);
+        }
+    }
+    kept
 }
 
 /// The geoms g2 of `geoms2` (at most 64) that may touch g1, as bits from its start: the masks
@@ -94,13 +144,15 @@ fn candidates(m: &Model, d: &Data, g1: usize, geoms2: std::ops::Range<usize>) ->
     // collide_geoms takes 2.2.2's max of the margins in type order: NaN where one is NaN in
     // one of the orders, so a NaN margin on either side rules the test out
     let nan1 = margin1.is_nan();
+    let overridden =
+        crate::engine::enabled(m, mjtEnableBit_::mjENBL_OVERRIDE).then_some(m.raw.opt.o_margin);
     let mut bits = 0;
     for g2 in geoms2.clone() {
         let paired = can_pair(mask1, (contype[g2], conaffinity[g2]));
         let collider = narrow::has_collider(t1, types[g2]);
         // spheres_apart (symmetric in the two geoms) where the squares decide it
         let r2 = rbound[g2];
-        let reach = r1 + r2 + assign_margin(m, max(margin1, margins[g2]));
+        let reach = r1 + r2 + overridden.unwrap_or(max(margin1, margins[g2]));
         let dif = sub3(&p1, &row(d.geom_xpos, g2));
         let dist2 = dif[0] * dif[0] + dif[1] * dif[1] + dif[2] * dif[2];
         let apart = (r1 > 0.0) & (r2 > 0.0) & !nan1 & clearly_beyond(dist2, reach);

@@ -5,6 +5,7 @@
 
 use crate::engine::linalg::{row, row_ref};
 
+mod body_frame;
 pub mod bounds;
 pub mod boxes;
 pub mod broadphase;
@@ -259,7 +260,7 @@ pub(super) fn collide_geoms(
     g1: usize,
     g2: usize,
     source: Source,
-    con: &mut Contacts,
+    con: &mut Buffer,
 ) -> Result<bool, EngineError> {
     let (g1, g2) = if m.geom_type()[g1] > m.geom_type()[g2] {
         (g2, g1)
@@ -302,6 +303,7 @@ pub(super) fn collide_geoms(
         return Ok(true);
     }
 
+    let con = con.get();
     let mut n = narrow::collide(m, d, g1, g2, margin, con);
     if n == 0 {
         return Ok(true);
@@ -357,6 +359,17 @@ pub(super) fn collide_geoms(
 /// Contacts a narrow-phase collider reports for one geom pair.
 pub(super) type Contacts = [ContactGeom; narrow::MAX_CONTACT_PAIR];
 
+/// The contacts of one geom pair at a time, set up when a collider first runs (colliders write
+/// every field of the contacts they report, so one buffer serves all pairs).
+pub(super) struct Buffer(Option<Contacts>);
+
+impl Buffer {
+    fn get(&mut self) -> &mut Contacts {
+        self.0
+            .get_or_insert_with(|| [ContactGeom::default(); narrow::MAX_CONTACT_PAIR])
+    }
+}
+
 /// Appends a contact (mj_addContact); false with the buffer-full warning when there is no room.
 fn add_contact(m: &Model, d: &mut Data, con: mjContact) -> Result<bool, EngineError> {
     let n = d.raw.ncon.max(0) as usize;
@@ -387,8 +400,7 @@ pub fn collision(m: &Model, d: &mut Data) -> Result<(), EngineError> {
 fn collide_all(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     let nbody = m.raw.nbody as usize;
     let npair = m.raw.npair.max(0) as usize;
-    // colliders write every field of the contacts they report, so one buffer serves all pairs
-    let mut con = [ContactGeom::default(); narrow::MAX_CONTACT_PAIR];
+    let mut con = Buffer(None);
     if m.raw.opt.collision == mjtCollision_::mjCOL_PAIR as i32 {
         for p in 0..npair {
             let (g1, g2) = (m.pair_geom1()[p] as usize, m.pair_geom2()[p] as usize);
@@ -399,7 +411,7 @@ fn collide_all(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     let merge = npair > 0 && m.raw.opt.collision == mjtCollision_::mjCOL_ALL as i32;
     d.with_scratch(|d, a| -> Result<(), EngineError> {
         let pairs = broadphase::broadphase(m, d, a)?;
-        let mut spheres = None;
+        let (mut spheres, mut frames) = (None, None);
         let nexclude = m.raw.nexclude.max(0) as usize;
         let (mut pairadr, mut exadr) = (0usize, 0usize);
         for &bp in pairs.iter() {
@@ -456,6 +468,7 @@ fn collide_all(m: &Model, d: &mut Data) -> Result<(), EngineError> {
                     geoms1,
                     geoms2,
                     spheres,
+                    &mut frames,
                     &mut con,
                 )?;
                 continue;

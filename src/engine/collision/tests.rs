@@ -313,6 +313,8 @@ thread_local! {
     pub static ONE_BY_ONE: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
     /// Body pairs and geoms the enclosing-sphere tests skipped.
     pub static SPHERE_SKIPS: std::cell::Cell<usize> = const { std::cell::Cell::new(0) };
+    /// Geom pairs the face-axis tests in body frames skipped.
+    pub static FRAME_SKIPS: std::cell::Cell<usize> = const { std::cell::Cell::new(0) };
 }
 
 /// The contacts (as text) of kinematics and collision at qpos `q`, with `switch` off, then on.
@@ -352,6 +354,7 @@ fn candidate_pairs_give_the_contacts_of_each_pair() {
         let mut data = model.make_data().unwrap();
         let (nq, qpos0) = (model.raw().nq as usize, data.qpos().to_vec());
         SPHERE_SKIPS.with(|n| n.set(0));
+        FRAME_SKIPS.with(|n| n.set(0));
         let mut touching = 0;
         for k in 0..600 {
             // the bodies spread over a box that shrinks and grows again
@@ -364,9 +367,10 @@ fn candidate_pairs_give_the_contacts_of_each_pair() {
             touching += contacts[0].len();
         }
         let skips = SPHERE_SKIPS.with(|n| n.get());
+        let frame_skips = FRAME_SKIPS.with(|n| n.get());
         assert!(
-            skips > 1000 && touching > 1000,
-            "{skips} skips, {touching} contacts"
+            skips > 1000 && frame_skips > 1000 && touching > 1000,
+            "{skips} skips, {frame_skips} in body frames, {touching} contacts"
         );
     }
 }
@@ -487,13 +491,16 @@ fn sweep_both_ways(masks: &[(i32, i32)]) {
     assert!(listed > 300 * 40 + 2000, "{listed} pairs");
 }
 
-/// The bounding-box test skips a pair only where its routine finds no contact: random pairs of
-/// every type it covers, placed around touching, with margins.
+/// The bounding-box test, and the face-axis test of the body frames (`body_frame`), skip a pair
+/// only where its routine finds no contact: random pairs of every type pair of geoms with a
+/// size, placed around touching (some with parallel faces), with margins.
 #[test]
 fn bounding_boxes_apart_only_without_contacts() {
+    use super::body_frame::{axis_apart, slack};
     use super::bounds::{self, Bound};
+    use super::boxes::box_box;
     use super::convex::{self, ConvexGeom, MeshData, MprOptions, Shape};
-    use super::primitive::{capsule_box, ContactGeom, Pose};
+    use super::primitive::*;
     use crate::engine::geom::*;
     use crate::math::quat::{normalize4, quat2mat};
 
@@ -521,14 +528,11 @@ fn bounding_boxes_apart_only_without_contacts() {
         tolerance: 1e-6,
     };
     let types = [SPHERE, CAPSULE, ELLIPSOID, CYLINDER, BOX, MESH];
-    let (mut skipped, mut contacts) = (0, 0);
-    for trial in 0..40000 {
+    let (mut skipped, mut contacts, mut faces) = (0, 0, 0);
+    for trial in 0..60000 {
         let (mut t1, mut t2) = (types[trial % 6], types[(trial / 6) % 6]);
         if t1 > t2 {
             (t1, t2) = (t2, t1);
-        }
-        if !bounds::worth_testing(t1, t2) {
-            continue;
         }
         let mut pose = |shift: f64| {
             let q = [rnd() - 0.5, rnd() - 0.5, rnd() - 0.5, rnd() - 0.5];
@@ -543,6 +547,10 @@ fn bounding_boxes_apart_only_without_contacts() {
             }
         };
         let (mut p1, mut p2) = (pose(0.0), pose(1.2));
+        // the same axes (faces parallel, as of geoms in one body's frame)
+        if trial % 5 == 0 {
+            p2.mat = p1.mat;
+        }
         // meshes: sized as compiled (a box test) or not (the bounding sphere stands in)
         for (t, p) in [(t1, &mut p1), (t2, &mut p2)] {
             if t == MESH && trial % 4 < 2 {
@@ -575,25 +583,51 @@ fn bounding_boxes_apart_only_without_contacts() {
             rbound: rbound(t, p),
         };
         let mut con = [ContactGeom::default(); convex::MAX_CONTACT_PAIR];
-        let n = if (t1, t2) == (CAPSULE, BOX) {
-            capsule_box(&p1.geom(), &p2.geom(), margin, &mut con)
-        } else {
-            let g = |t: i32, p: &Pose| ConvexGeom {
-                shape: shape(t),
-                pose: *p,
-                rbound: rbound(t, p),
-            };
-            convex::convex(&g(t1, &p1), &g(t2, &p2), margin, &opt, false, &mut con)
+        let (g1, g2) = (&p1.geom(), &p2.geom());
+        let n = match (t1, t2) {
+            (SPHERE, SPHERE) => sphere_sphere(g1, g2, margin, &mut con),
+            (SPHERE, CAPSULE) => sphere_capsule(g1, g2, margin, &mut con),
+            (SPHERE, BOX) => sphere_box(g1, g2, margin, &mut con),
+            (CAPSULE, CAPSULE) => capsule_capsule(g1, g2, margin, &mut con),
+            (CAPSULE, BOX) => capsule_box(g1, g2, margin, &mut con),
+            (BOX, BOX) => box_box(g1, g2, margin, &mut con),
+            _ => {
+                let g = |t: i32, p: &Pose| ConvexGeom {
+                    shape: shape(t),
+                    pose: *p,
+                    rbound: rbound(t, p),
+                };
+                convex::convex(&g(t1, &p1), &g(t2, &p2), margin, &opt, false, &mut con)
+            }
         };
         contacts += (n > 0) as usize;
-        if bounds::apart(&bound(t1, &p1), &bound(t2, &p2), margin) {
+        let (b1, b2) = (bound(t1, &p1), bound(t2, &p2));
+        if bounds::worth_testing(t1, t2) && bounds::apart(&b1, &b2, margin) {
             skipped += 1;
             assert_eq!(n, 0, "types {t1} {t2}: {p1:?} {p2:?} margin {margin}");
         }
+        // the face-axis test of the body frames, with the box's centre at the frame's origin
+        for (own, other) in [(&b1, &b2), (&b2, &b1)] {
+            let Some(h) = own.extent else { continue };
+            let c = mul_mat_t_vec3(&own.mat, &sub3(&other.pos, &own.pos));
+            let rot = mul_mat3t_mat(&own.mat, &other.mat).map(f64::abs);
+            let (r, size) = match other.extent {
+                Some(e) => (
+                    [0, 1, 2].map(|k| (0..3).map(|j| e[j] * rot[3 * k + j]).sum::<f64>()),
+                    e[0] + e[1] + e[2],
+                ),
+                None => ([other.rbound; 3], other.rbound),
+            };
+            let limit = margin + slack(h[0] + h[1] + h[2], &[0.0; 3]) + slack(size, &c);
+            if (0..3).any(|k| axis_apart(c[k], h[k] + r[k], limit)) {
+                faces += 1;
+                assert_eq!(n, 0, "faces of {t1} {t2}: {p1:?} {p2:?} margin {margin}");
+            }
+        }
     }
     assert!(
-        skipped > 5000 && contacts > 5000,
-        "{skipped} skipped, {contacts} in contact"
+        skipped > 5000 && faces > 20000 && contacts > 10000,
+        "{skipped} skipped, {faces} apart along faces, {contacts} in contact"
     );
 
     // edited sizes, and meshes whose size is not their vertices' bound, give no box
