@@ -1,6 +1,6 @@
 // Contact parameters a program edits in mjModel, NaN among them (tests/edited_params.rs): a
-// NaN margin, gap, friction or direct solref on one geom and then on another, and a NaN
-// impratio, the model run for 60 steps. 2.2.2 mixes a pair's parameters with mju_max/mju_min, which pass a NaN on in
+// NaN margin, gap, friction or direct solref, or a size edited to zero or NaN, on one geom and
+// then on another, and a NaN impratio, the model run for 60 steps. 2.2.2 mixes a pair's parameters with mju_max/mju_min, which pass a NaN on in
 // one argument order only, and its collision filters then test with that margin. Prints the
 // contacts (every field, byte for byte) and the state as hashes, identical on both libraries.
 #include <math.h>
@@ -17,12 +17,16 @@ static uint64_t hash(uint64_t h, const void* p, size_t n) {
 
 static void quiet(const char* msg) { (void)msg; }
 
-// One edit of geom g: 0 margin, 1 gap, 2 friction (sliding), 3 solref (direct, NaN damping).
+// One edit of geom g: 0 margin, 1 gap, 2 friction (sliding), 3 solref (direct, NaN damping),
+// 4 size: a zero third half-size (a box's, which box routines take as no bound), 5 size: a
+// NaN first one (the bounding radius stays as compiled).
 static void edit(mjModel* m, int kind, int g) {
   switch (kind) {
     case 0: m->geom_margin[g] = NAN; break;
     case 1: m->geom_gap[g] = NAN; break;
     case 2: m->geom_friction[3 * g] = NAN; break;
+    case 4: m->geom_size[3 * g + 2] = 0; break;
+    case 5: m->geom_size[3 * g] = NAN; break;
     default:
       m->geom_solref[mjNREF * g] = -100;
       m->geom_solref[mjNREF * g + 1] = NAN;
@@ -46,7 +50,8 @@ static void run(const mjModel* m, mjData* d, const char* what) {
 
 int main(int argc, char** argv) {
   mju_user_warning = quiet;
-  const char* kinds[] = {"margin", "gap", "friction", "solref"};
+  const char* kinds[] = {"margin NaN", "gap NaN", "friction NaN", "solref NaN",
+                         "size[2] zero", "size[0] NaN"};
   for (int a = 1; a < argc; a++) {
     char err[1000];
     mjModel* m = mj_loadXML(argv[a], NULL, err, sizeof err);
@@ -63,11 +68,11 @@ int main(int argc, char** argv) {
     for (int g = 0; g < m->ngeom && picked < 4; g += 1 + m->ngeom / 5) {
       if (!m->geom_contype[g] && !m->geom_conaffinity[g]) continue;
       picked++;
-      for (int k = 0; k < 4; k++) {
+      for (int k = 0; k < 6; k++) {
         mjModel* e = mj_copyModel(NULL, m);
         edit(e, k, g);
         char what[64];
-        snprintf(what, sizeof what, "%s NaN on geom %d", kinds[k], g);
+        snprintf(what, sizeof what, "%s on geom %d", kinds[k], g);
         run(e, d, what);
         mj_deleteModel(e);
       }

@@ -2,7 +2,9 @@
 //! edited_params.c): 2.2.2 mixes a pair's margin, gap, friction and solref with mju_max and
 //! mju_min, which pass a NaN on in one argument order only, and tests its bounding spheres
 //! with the margin that gives; our filters ahead of that test must let such pairs through.
-//! A NaN impratio likewise reaches the elliptic cones' R (mju_max(mjMINVAL, impratio)).
+//! A NaN impratio likewise reaches the elliptic cones' R (mju_max(mjMINVAL, impratio)). Sizes
+//! edited to zero or NaN (the bounding radius as compiled) must not let the box tests skip a
+//! pair whose routine, taking a zero half-size as no bound, finds a contact.
 //! Both libraries must print the same hashes of every contact and of the state.
 
 mod common;
@@ -20,7 +22,7 @@ fn edited_contact_parameters_like_the_reference() {
     ];
     let args: Vec<&str> = models.iter().map(String::as_str).collect();
     let (reference, ours) = both_outputs("edited_params", &args);
-    assert_eq!(reference.matches("hash").count(), 72, "{reference}");
+    assert_eq!(reference.matches("hash").count(), 104, "{reference}");
     // the edits change the runs: most hashes differ from the model as loaded
     let loaded: Vec<&str> = reference
         .lines()
@@ -29,11 +31,19 @@ fn edited_contact_parameters_like_the_reference() {
         .collect();
     let changed = reference
         .lines()
-        .filter(|l| l.contains("NaN") && !loaded.contains(&&l[l.len() - 16..]))
+        .filter(|l| !l.starts_with("as loaded") && !loaded.contains(&&l[l.len() - 16..]))
         .count();
     assert!(
         changed >= 40,
         "only {changed} edits changed the run:\n{reference}"
+    );
+    let sizes = reference
+        .lines()
+        .filter(|l| l.starts_with("size") && !loaded.contains(&&l[l.len() - 16..]))
+        .count();
+    assert!(
+        sizes >= 8,
+        "only {sizes} size edits changed the run:\n{reference}"
     );
     assert_eq!(
         reference, ours,

@@ -5,13 +5,12 @@
 //! pair first needs it; each pair's test is then a few subtractions.
 
 use super::bounds::extent;
-use crate::engine::geom::{HFIELD, PLANE};
 use crate::engine::linalg::{row, row_ref};
 use crate::engine::{Data, Model};
 use crate::math::vec3::{mul_mat3t_mat, mul_mat_t_vec3, sub3};
 use crate::math::{Mat3, Vec3};
 
-/// Most geoms of a body a frame holds.
+/// The most geoms of a body that a frame holds.
 pub(super) const MAX_GEOMS: usize = 32;
 
 /// Geoms of one body in a frame: centres and half-widths along its axes, and the slack of
@@ -33,7 +32,8 @@ pub(super) struct Frame {
     other_mat: Mat3,
     /// |the other body's rotation in this frame|, for its geoms with none of their own.
     other_rot: Mat3,
-    /// Own geoms whose alignment is known, those aligned (and filled), other geoms filled.
+    /// Bits: own geoms tested for alignment, own geoms aligned (and filled in), other geoms
+    /// filled in.
     own_known: u64,
     own_aligned: u64,
     other_filled: u64,
@@ -43,11 +43,6 @@ pub(super) struct Frame {
 
 /// The frames of the two bodies of a pair.
 pub(super) struct Frames(pub(super) [Frame; 2]);
-
-/// Can the geom pair at all (a geom with neither mask pairs with nothing)?
-fn collidable(m: &Model, g: usize) -> bool {
-    m.geom_contype()[g] != 0 || m.geom_conaffinity()[g] != 0
-}
 
 impl Frames {
     pub(super) fn new() -> Self {
@@ -106,14 +101,14 @@ impl Frame {
         (c, slack(size, &c))
     }
 
-    /// Finds whether own geom i is aligned with the frame (a geom that may collide, with a
-    /// box), and fills it in if so.
+    /// Finds whether own geom i is aligned with the frame (with a box along its axes), and
+    /// fills it in if so.
     #[inline(never)]
     fn learn_own(&mut self, m: &Model, d: &Data, i: usize) {
         let bit = 1u64 << i;
         self.own_known |= bit;
         let g = self.start.0 + i;
-        if same(row_ref(d.geom_xmat, g), &self.mat) && collidable(m, g) {
+        if same(row_ref(d.geom_xmat, g), &self.mat) {
             if let Some(h) = box_of(m, g) {
                 let (c, slack) = self.centre(d, g, h[0] + h[1] + h[2]);
                 store(&mut self.own, i, c, h, slack);
@@ -122,13 +117,12 @@ impl Frame {
         }
     }
 
-    /// Fills in the other body's geom j.
+    /// Fills in the other body's geom j; one without a box (a plane, a height field, an
+    /// edited size) gets widths no test passes.
     #[inline(never)]
     fn fill_other(&mut self, m: &Model, d: &Data, j: usize) {
         self.other_filled |= 1u64 << j;
         let g = self.start.1 + j;
-        let rbound = m.geom_rbound()[g];
-        let flat = matches!(m.geom_type()[g], PLANE | HFIELD);
         let (r, size) = match box_of(m, g) {
             Some(h) => {
                 let geom_mat = row_ref::<9>(d.geom_xmat, g);
@@ -141,8 +135,6 @@ impl Frame {
                     |k: usize| h[0] * rot[3 * k] + h[1] * rot[3 * k + 1] + h[2] * rot[3 * k + 2];
                 ([width(0), width(1), width(2)], h[0] + h[1] + h[2])
             }
-            // the bounding sphere; none (planes and height fields too): no test passes
-            None if rbound > 0.0 && !flat => ([rbound; 3], rbound),
             None => ([f64::INFINITY; 3], 0.0),
         };
         let (c, slack) = self.centre(d, g, size);

@@ -6,19 +6,18 @@
 use crate::engine::geom::*;
 use crate::math::Vec3;
 
-/// A geom's pose and bounds: half-extents of its box in its own frame where its size gives
-/// them, else its bounding radius (meshes).
+/// A geom's pose and the half-extents of its box in its own frame.
 pub struct Bound {
     pub pos: Vec3,
     pub mat: [f64; 9],
-    pub extent: Option<Vec3>,
-    pub rbound: f64,
+    pub h: Vec3,
 }
 
 /// Half-extents of a geom's box from its type and size. A mesh geom's size is its mesh's
 /// largest |coordinate| per axis (what the compiler writes, its bounding radius the norm of
-/// that): taken only where the radius still says so, else the bounding sphere stands in.
-/// Sizes that are negative or NaN (an edited model) give none.
+/// that): taken only where the radius still says so. Sizes that are zero, negative or NaN (an
+/// edited model: a routine may not bound the geom by them, box routines take a zero half-size
+/// as no bound) give none, and so does a mesh whose size and radius disagree.
 pub fn extent(t: i32, s: &[f64; 3], rbound: f64) -> Option<Vec3> {
     let (h, used) = match t {
         SPHERE => ([s[0]; 3], 1),
@@ -30,7 +29,7 @@ pub fn extent(t: i32, s: &[f64; 3], rbound: f64) -> Option<Vec3> {
         }
         _ => return None,
     };
-    s[..used].iter().all(|x| *x >= 0.0).then_some(h)
+    s[..used].iter().all(|x| *x > 0.0).then_some(h)
 }
 
 /// Do these types (t1 <= t2) go to a routine worth a bounding-box test first: MPR (a mesh,
@@ -41,14 +40,11 @@ pub fn worth_testing(t1: i32, t2: i32) -> bool {
     t1 >= SPHERE && (mpr(t1) || mpr(t2) || (t1 == CAPSULE && t2 == BOX))
 }
 
-/// Half-width of b's bounds along the unit axis u.
+/// Half-width of b's box along the unit axis u.
 fn radius(b: &Bound, u: &Vec3) -> f64 {
-    match b.extent {
-        Some(h) => (0..3)
-            .map(|j| h[j] * (u[0] * b.mat[j] + u[1] * b.mat[3 + j] + u[2] * b.mat[6 + j]).abs())
-            .sum(),
-        None => b.rbound,
-    }
+    (0..3)
+        .map(|j| b.h[j] * (u[0] * b.mat[j] + u[1] * b.mat[3 + j] + u[2] * b.mat[6 + j]).abs())
+        .sum()
 }
 
 /// Are a and b apart by more than `margin` along a face axis of either box? The slack covers
@@ -61,19 +57,14 @@ pub fn apart(a: &Bound, b: &Bound, margin: f64) -> bool {
         b.pos[2] - a.pos[2],
     ];
     let dist = (dif[0] * dif[0] + dif[1] * dif[1] + dif[2] * dif[2]).sqrt();
-    let size = |g: &Bound| g.extent.map_or(g.rbound, |h| h[0] + h[1] + h[2]);
+    let size = |g: &Bound| g.h[0] + g.h[1] + g.h[2];
     // (coincident centres: an infinite limit; NaN: no gap compares greater)
-    let bounded = |g: &Bound| g.extent.is_some() || g.rbound > 0.0;
-    if !(bounded(a) && bounded(b)) {
-        return false;
-    }
     let limit = margin + 1e-6 * (size(a) + size(b)) + 1e-7 / dist;
     for (g, other) in [(a, b), (b, a)] {
-        let Some(h) = g.extent else { continue };
         for k in 0..3 {
             let u = [g.mat[k], g.mat[3 + k], g.mat[6 + k]];
             let gap =
-                (u[0] * dif[0] + u[1] * dif[1] + u[2] * dif[2]).abs() - h[k] - radius(other, &u);
+                (u[0] * dif[0] + u[1] * dif[1] + u[2] * dif[2]).abs() - g.h[k] - radius(other, &u);
             if gap > limit {
                 return true;
             }

@@ -69,7 +69,8 @@ pub(super) fn collide_bodies(
     let masks2 = geoms2
         .clone()
         .fold((0, 0), |(t, a), g| (t | contype[g], a | conaffinity[g]));
-    // (in one block of 64, from the body's first geom)
+    // (bodies of at most MAX_GEOMS geoms: one block of 64, bits from each body's first geom;
+    // the candidates' masks pair, so both geoms of each may collide)
     let framed = geoms1.len() <= MAX_GEOMS && geoms2.len() <= MAX_GEOMS;
     // the bodies' frames, emptied when a pair first needs them
     let mut reset = false;

@@ -214,25 +214,28 @@ fn clearly_within(dist2: f64, reach: f64) -> bool {
     square_in_range(reach) & (dist2 < reach * reach * (1.0 - ROOT_BAND))
 }
 
-/// The bounding-box test (`bounds`) of geoms g1 and g2.
+/// The bounding-box test (`bounds`) of geoms g1 and g2 (none where one has no box).
 fn boxes_apart(m: &Model, d: &Data, g1: usize, g2: usize, margin: f64) -> bool {
-    bounds::apart(&bound(m, d, g1), &bound(m, d, g2), margin)
+    match (bound(m, d, g1), bound(m, d, g2)) {
+        (Some(b1), Some(b2)) => bounds::apart(&b1, &b2, margin),
+        _ => false,
+    }
 }
 
-/// Geom g's pose and bounds, built in the caller (returned through memory, its fields were
-/// read back before their stores completed).
+/// Geom g's pose and box, built in the caller (returned through memory, its fields were read
+/// back before their stores completed).
 #[inline(always)]
-fn bound(m: &Model, d: &Data, g: usize) -> bounds::Bound {
-    bounds::Bound {
+fn bound(m: &Model, d: &Data, g: usize) -> Option<bounds::Bound> {
+    let h = bounds::extent(
+        m.geom_type()[g],
+        row_ref(m.geom_size(), g),
+        m.geom_rbound()[g],
+    )?;
+    Some(bounds::Bound {
         pos: row(d.geom_xpos, g),
         mat: row(d.geom_xmat, g),
-        extent: bounds::extent(
-            m.geom_type()[g],
-            row_ref(m.geom_size(), g),
-            m.geom_rbound()[g],
-        ),
-        rbound: m.geom_rbound()[g],
-    }
+        h,
+    })
 }
 
 /// Can this dynamic geom pair give no contact, whatever the broad phase says (no collider for
