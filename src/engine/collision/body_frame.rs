@@ -15,6 +15,7 @@ pub(super) const MAX_GEOMS: usize = 32;
 
 /// Geoms of one body in a frame: centres and half-widths along its axes, and the slack of
 /// their tests.
+#[derive(Default)]
 struct Geoms {
     c: [[f64; MAX_GEOMS]; 3],
     r: [[f64; MAX_GEOMS]; 3],
@@ -24,6 +25,7 @@ struct Geoms {
 /// A body pair in the frame of one of its bodies, filled a geom at a time as pairs need them:
 /// that body's geoms with no rotation of their own with their half-extents, the other body's
 /// with the half-widths of their boxes along the frame's axes.
+#[derive(Default)]
 pub(super) struct Frame {
     /// First geom of the frame's body and of the other body.
     start: (usize, usize),
@@ -42,30 +44,10 @@ pub(super) struct Frame {
 }
 
 /// The frames of the two bodies of a pair.
+#[derive(Default)]
 pub(super) struct Frames(pub(super) [Frame; 2]);
 
 impl Frames {
-    pub(super) fn new() -> Self {
-        let zero = || Geoms {
-            c: [[0.0; MAX_GEOMS]; 3],
-            r: [[0.0; MAX_GEOMS]; 3],
-            slack: [0.0; MAX_GEOMS],
-        };
-        let frame = || Frame {
-            start: (0, 0),
-            mat: [0.0; 9],
-            pos: [0.0; 3],
-            other_mat: [0.0; 9],
-            other_rot: [0.0; 9],
-            own_known: 0,
-            own_aligned: 0,
-            other_filled: 0,
-            own: zero(),
-            other: zero(),
-        };
-        Frames([frame(), frame()])
-    }
-
     /// Empties both frames for bodies b1 and b2, whose geoms start at `start1` and `start2`
     /// (at most MAX_GEOMS each).
     pub(super) fn reset(

@@ -7,8 +7,9 @@
 
 use super::body_frame::{Frames, MAX_GEOMS};
 use super::spheres::{beyond, Spheres};
-use super::{assign_margin, can_pair, clearly_beyond, collide_geoms, narrow, Buffer, Source};
-use crate::abi::mjtEnableBit_;
+use super::{
+    assign_margin, can_pair, clearly_beyond, collide_geoms, margin_override, narrow, Buffer, Source,
+};
 use crate::engine::linalg::row;
 use crate::engine::{Data, EngineError, Model};
 use crate::math::misc::max;
@@ -89,7 +90,7 @@ pub(super) fn collide_bodies(
         for base in geoms2.clone().step_by(64) {
             let mut bits = candidates(m, d, g1, base..geoms2.end.min(base + 64));
             if bits != 0 && framed {
-                let frames = frames.get_or_insert_with(Frames::new);
+                let frames = frames.get_or_insert_with(Frames::default);
                 if !reset {
                     frames.reset(d, (b1, b2), (geoms1.start, geoms2.start));
                     reset = true;
@@ -145,8 +146,7 @@ fn candidates(m: &Model, d: &Data, g1: usize, geoms2: std::ops::Range<usize>) ->
     // collide_geoms takes 2.2.2's max of the margins in type order: NaN where one is NaN in
     // one of the orders, so a NaN margin on either side rules the test out
     let nan1 = margin1.is_nan();
-    let overridden =
-        crate::engine::enabled(m, mjtEnableBit_::mjENBL_OVERRIDE).then_some(m.raw.opt.o_margin);
+    let overridden = margin_override(m);
     let mut bits = 0;
     for g2 in geoms2.clone() {
         let paired = can_pair(mask1, (contype[g2], conaffinity[g2]));

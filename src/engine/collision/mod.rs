@@ -29,12 +29,14 @@ use primitive::ContactGeom;
 /// Smallest friction coefficient of a contact (mjMINMU).
 const MINMU: f64 = 1e-5;
 
+/// The margin of every contact when the contact override is on.
+#[inline(always)]
+pub(super) fn margin_override(m: &Model) -> Option<f64> {
+    enabled(m, mjtEnableBit_::mjENBL_OVERRIDE).then_some(m.raw.opt.o_margin)
+}
+
 pub(super) fn assign_margin(m: &Model, margin: f64) -> f64 {
-    if enabled(m, mjtEnableBit_::mjENBL_OVERRIDE) {
-        m.raw.opt.o_margin
-    } else {
-        margin
-    }
+    margin_override(m).unwrap_or(margin)
 }
 
 /// Distance of geom g's centre above the plane geom's surface.
