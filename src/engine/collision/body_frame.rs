@@ -164,7 +164,7 @@ fn same(a: &Mat3, b: &Mat3) -> bool {
     a.iter().zip(b).fold(true, |all, (x, y)| all & (x == y))
 }
 
-fn box_of(m: &Model, g: usize) -> Option<Vec3> {
+pub(super) fn box_of(m: &Model, g: usize) -> Option<Vec3> {
     extent(
         m.geom_type()[g],
         row_ref(m.geom_size(), g),

@@ -5,6 +5,7 @@
 //! face-axis tests of the two bodies' frames (`body_frame`), and collide_geoms makes the exact
 //! tests.
 
+use super::big_frame::{Large, Pair, MAX_LARGE, MAX_SMALL};
 use super::body_frame::{Frames, MAX_GEOMS};
 use super::spheres::{beyond, Spheres};
 use super::{
@@ -56,7 +57,7 @@ pub(super) fn collide_bodies(
     geoms1: std::ops::Range<usize>,
     geoms2: std::ops::Range<usize>,
     spheres: &mut Spheres,
-    frames: &mut Option<Frames>,
+    (frames, large): (&mut Option<Frames>, &mut Option<Large>),
     con: &mut Buffer,
 ) -> Result<(), EngineError> {
     let s2 = spheres.get(m, d, b2);
@@ -75,10 +76,44 @@ pub(super) fn collide_bodies(
     let framed = geoms1.len() <= MAX_GEOMS && geoms2.len() <= MAX_GEOMS;
     // the bodies' frames, emptied when a pair first needs them
     let mut reset = false;
+    // a body of many geoms against one of few: both in the large one's frame
+    let fits = |big: &std::ops::Range<usize>, few: &std::ops::Range<usize>| {
+        big.len() > MAX_GEOMS && big.len() <= MAX_LARGE && few.len() <= MAX_SMALL
+    };
+    let large_side = if fits(&geoms1, &geoms2) {
+        1
+    } else if fits(&geoms2, &geoms1) {
+        2
+    } else {
+        0
+    };
+    let mut near = [u64::MAX; MAX_LARGE / 64];
+    let pair = (large_side != 0).then(|| {
+        let store = large.get_or_insert_with(Large::default);
+        let (l, s) = if large_side == 1 {
+            ((b1, geoms1.clone()), geoms2.clone())
+        } else {
+            ((b2, geoms2.clone()), geoms1.clone())
+        };
+        let lgeoms = l.1.clone();
+        let pair = Pair::new(m, d, store, l, s);
+        let overridden = margin_override(m);
+        for (w, base) in lgeoms.clone().step_by(64).enumerate() {
+            near[w] = pair.near(m, base..lgeoms.end.min(base + 64), overridden);
+        }
+        pair
+    });
     for g1 in geoms1.clone() {
         // a geom that pairs with none of the other body's geoms, or is far from all
         if !can_pair((contype[g1], conaffinity[g1]), masks2) {
             continue;
+        }
+        if large_side == 1 {
+            let i = g1 - geoms1.start;
+            if near[i / 64] & (1 << (i % 64)) == 0 {
+                skipped();
+                continue;
+            }
         }
         let r1 = m.geom_rbound()[g1];
         if let Some(s2) = s2 {
@@ -89,6 +124,12 @@ pub(super) fn collide_bodies(
         }
         for base in geoms2.clone().step_by(64) {
             let mut bits = candidates(m, d, g1, base..geoms2.end.min(base + 64));
+            if large_side == 2 {
+                bits &= near[(base - geoms2.start) / 64];
+            }
+            if let (Some(pair), true) = (&pair, bits != 0) {
+                bits = pairs_not_apart_large(m, pair, g1, base, large_side == 1, bits);
+            }
             if bits != 0 && framed {
                 let frames = frames.get_or_insert_with(Frames::default);
                 if !reset {
@@ -127,6 +168,38 @@ fn pairs_not_apart(m: &Model, d: &Data, i: usize, bits: u64, frames: &mut Frames
         }
         let margin = assign_margin(m, max(m1, m2));
         if f1.apart(m, d, i, j, margin) || f2.apart(m, d, j, i, margin) {
+            frame_skipped();
+            kept &= !(1 << j);
+        }
+    }
+    kept
+}
+
+/// The candidate bits of geom g1 (bits: geoms of the other body from `base`) that the tests in
+/// the large body's frame leave (`g1_large`: g1 is of the large body).
+fn pairs_not_apart_large(
+    m: &Model,
+    pair: &Pair,
+    g1: usize,
+    base: usize,
+    g1_large: bool,
+    bits: u64,
+) -> u64 {
+    let margins = m.geom_margin();
+    let mut kept = bits;
+    let mut rest = bits;
+    while rest != 0 {
+        let j = rest.trailing_zeros() as usize;
+        rest &= rest - 1;
+        let g2 = base + j;
+        let (m1, m2) = (margins[g1], margins[g2]);
+        // (a NaN margin, which collide_geoms may take in one order, makes no test)
+        if m1.is_nan() || m2.is_nan() {
+            continue;
+        }
+        let margin = assign_margin(m, max(m1, m2));
+        let (gl, gs) = if g1_large { (g1, g2) } else { (g2, g1) };
+        if pair.apart(gl, gs, margin) {
             frame_skipped();
             kept &= !(1 << j);
         }

@@ -5,6 +5,7 @@
 
 use crate::engine::linalg::{row, row_ref};
 
+mod big_frame;
 mod body_frame;
 pub mod bounds;
 pub mod boxes;
@@ -416,7 +417,7 @@ fn collide_all(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     let merge = npair > 0 && m.raw.opt.collision == mjtCollision_::mjCOL_ALL as i32;
     d.with_scratch(|d, a| -> Result<(), EngineError> {
         let pairs = broadphase::broadphase(m, d, a)?;
-        let (mut spheres, mut frames) = (None, None);
+        let (mut spheres, mut frames, mut large) = (None, None, None);
         let nexclude = m.raw.nexclude.max(0) as usize;
         let (mut pairadr, mut exadr) = (0usize, 0usize);
         for &bp in pairs.iter() {
@@ -473,7 +474,7 @@ fn collide_all(m: &Model, d: &mut Data) -> Result<(), EngineError> {
                     geoms1,
                     geoms2,
                     spheres,
-                    &mut frames,
+                    (&mut frames, &mut large),
                     &mut con,
                 )?;
                 continue;

@@ -348,7 +348,11 @@ fn both_ways(
 fn candidate_pairs_give_the_contacts_of_each_pair() {
     let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("models/extra");
     let mut uniform = uniform(777);
-    for file in ["geom_clusters.xml", "geom_clusters_override.xml"] {
+    for file in [
+        "geom_clusters.xml",
+        "geom_clusters_override.xml",
+        "geom_large.xml",
+    ] {
         let xml = std::fs::read_to_string(dir.join(file)).unwrap();
         let model = crate::api::Model::from_xml_str(&xml).unwrap();
         let mut data = model.make_data().unwrap();
