@@ -1,6 +1,6 @@
 // Contact parameters a program edits in mjModel, NaN among them (tests/edited_params.rs): a
 // NaN margin, gap, friction or direct solref, or a size edited to zero or NaN, on one geom and
-// then on another, and a NaN impratio, the model run for 60 steps. 2.2.2 mixes a pair's parameters with mju_max/mju_min, which pass a NaN on in
+// then on another, a NaN impratio and a NaN gravity, the model run for 60 steps. 2.2.2 mixes a pair's parameters with mju_max/mju_min, which pass a NaN on in
 // one argument order only, and its collision filters then test with that margin. Prints the
 // contacts (every field, byte for byte) and the state as hashes, identical on both libraries.
 #include <math.h>
@@ -63,11 +63,15 @@ int main(int argc, char** argv) {
     const char* name = strrchr(argv[a], '/') ? strrchr(argv[a], '/') + 1 : argv[a];
     printf("%s\n", name);
     run(m, d, "as loaded");
-    // geoms that collide, the first and then others through the model
-    int picked = 0;
-    for (int g = 0; g < m->ngeom && picked < 4; g += 1 + m->ngeom / 5) {
-      if (!m->geom_contype[g] && !m->geom_conaffinity[g]) continue;
-      picked++;
+    // geoms that collide: the first, others through the model, and the last
+    int picks[5], npick = 0, last = m->ngeom - 1;
+    for (int g = 0; g < m->ngeom && npick < 4; g += 1 + m->ngeom / 5) {
+      if (m->geom_contype[g] || m->geom_conaffinity[g]) picks[npick++] = g;
+    }
+    while (last >= 0 && !m->geom_contype[last] && !m->geom_conaffinity[last]) last--;
+    if (last >= 0 && (npick == 0 || picks[npick - 1] != last)) picks[npick++] = last;
+    for (int p = 0; p < npick; p++) {
+      int g = picks[p];
       for (int k = 0; k < 6; k++) {
         mjModel* e = mj_copyModel(NULL, m);
         edit(e, k, g);
@@ -81,6 +85,11 @@ int main(int argc, char** argv) {
     mjModel* e = mj_copyModel(NULL, m);
     e->opt.impratio = NAN;
     run(e, d, "impratio NaN");
+    mj_deleteModel(e);
+    // gravity, which 2.2.2 scales by -1 (a NaN keeps its sign)
+    e = mj_copyModel(NULL, m);
+    e->opt.gravity[2] = NAN;
+    run(e, d, "gravity NaN");
     mj_deleteModel(e);
     mj_deleteData(d);
     mj_deleteModel(m);

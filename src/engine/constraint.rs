@@ -506,11 +506,12 @@ fn limits(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> {
                     let a0 = dofadr as i32;
                     let ch = [a0, a0 + 1, a0 + 2];
                     let ch = if sparse {
-                        j[..3].copy_from_slice(&scl3(&axis, -1.0));
+                        j[..3].copy_from_slice(&scl3(&axis, crate::math::misc::minus_one()));
                         Some(&ch[..])
                     } else {
                         j.fill(0.0);
-                        j[dofadr..dofadr + 3].copy_from_slice(&scl3(&axis, -1.0));
+                        j[dofadr..dofadr + 3]
+                            .copy_from_slice(&scl3(&axis, crate::math::misc::minus_one()));
                         None
                     };
                     let (p, mg) = ([dist], [margin]);

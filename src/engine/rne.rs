@@ -4,7 +4,7 @@ use super::linalg::{dot6, put, row};
 use super::support::contact_force;
 use super::{disabled, Data, EngineError, Model};
 use crate::abi::{mjNEQDATA, mjtConstraint_, mjtDisableBit_};
-use crate::math::misc::is_zero;
+use crate::math::misc::{self, is_zero};
 use crate::math::*;
 
 /// result = M(qpos)*qacc + C(qpos,qvel); without the inertial term when `qacc` is None (mj_rne).
@@ -20,10 +20,7 @@ pub fn rne_with(
         let cacc = a.alloc(6 * nbody)?;
         let cfrc = a.alloc(6 * nbody)?;
         if !disabled(m, mjtDisableBit_::mjDSBL_GRAVITY) {
-            let g = m.raw.opt.gravity;
-            cacc[3] = -g[0];
-            cacc[4] = -g[1];
-            cacc[5] = -g[2];
+            cacc[3..6].copy_from_slice(&scl3(&m.raw.opt.gravity, misc::minus_one()));
         }
         for i in 1..nbody {
             let bda = m.body_dofadr()[i].max(0) as usize;
@@ -149,8 +146,7 @@ pub fn rne_post_constraint(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     let nbody = m.raw.nbody as usize;
     d.cacc[..6].fill(0.0);
     if !disabled(m, mjtDisableBit_::mjDSBL_GRAVITY) {
-        let g = m.raw.opt.gravity;
-        d.cacc[3..6].copy_from_slice(&[-g[0], -g[1], -g[2]]);
+        d.cacc[3..6].copy_from_slice(&scl3(&m.raw.opt.gravity, misc::minus_one()));
     }
 
     // applied forces, rearranged as torque:force

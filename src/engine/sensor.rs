@@ -312,7 +312,7 @@ fn touch(m: &Model, d: &Data, site: usize) -> Result<f64, EngineError> {
         }
         let (mut ray, _) = normalize3(&scl3(&v3(&con.frame[..3]), normal));
         if body == b2 {
-            ray = scl3(&ray, -1.0);
+            ray = scl3(&ray, crate::math::misc::minus_one());
         }
         let hit = ray_geom(
             &row(d.site_xpos, site),

@@ -15,7 +15,7 @@ use crate::math::chol_sparse::{
     chol_factor_sparse, chol_factor_sparse_preset, chol_solve_sparse, chol_sparse_pattern,
     chol_sparse_values, chol_update_sparse,
 };
-use crate::math::misc::kept_or_neg_zero;
+use crate::math::misc::{kept_or_neg_zero, minus_one};
 use crate::math::sparse::{
     add_td_row, compress_sparse, dot_sparse, keep_nonfinite_rows, mul_mat_vec_sparse,
     sqr_mat_td_sparse_pattern, sqr_mat_td_sparse_values, SparseRef,
@@ -1100,7 +1100,7 @@ fn cg_newton(
     }
     update_gradient(m, d, &mut c);
     precondition(m, d, &mut c);
-    scl(&mut c.search[..nv], &c.mgrad[..nv], -1.0);
+    scl(&mut c.search[..nv], &c.mgrad[..nv], minus_one());
 
     let mut iter = 0;
     while iter < maxiter {
@@ -1143,7 +1143,7 @@ fn cg_newton(
         }
         precondition(m, d, &mut c);
         if newton {
-            scl(&mut c.search[..nv], &c.mgrad[..nv], -1.0);
+            scl(&mut c.search[..nv], &c.mgrad[..nv], minus_one());
         } else {
             // Polak-Ribiere; the denominator uses the old Mgrad before it is overwritten
             let den = crate::math::misc::max(MINVAL, dot(gradold, mgradold, nv));

@@ -5,6 +5,13 @@ use super::MINVAL;
 /// Largest representable value MuJoCo accepts as sane.
 pub const MAXVAL: f64 = 1e10;
 
+/// -1 as a factor where 2.2.2 scales by -1: a product keeps a NaN's sign, a negation flips
+/// it, and the compiler makes a product with a known -1 a negation; this one it cannot see.
+#[inline(always)]
+pub fn minus_one() -> f64 {
+    std::hint::black_box(-1.0)
+}
+
 #[inline]
 fn max_c(a: f64, b: f64) -> f64 {
     if a > b {

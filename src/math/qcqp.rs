@@ -129,7 +129,7 @@ pub fn qcqp(
             return Some(false);
         }
         chol_solve(res, &ala, &b, n);
-        scl_in_place(&mut res[..n], -1.0);
+        scl_in_place(&mut res[..n], super::misc::minus_one());
 
         let val = dot(res, res, n) - r * r;
         if val < 1e-10 {

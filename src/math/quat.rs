@@ -235,7 +235,7 @@ pub fn mul_pose(pos1: &Vec3, quat1: &Quat, pos2: &Vec3, quat2: &Quat) -> (Vec3, 
 /// Inverse pose.
 pub fn neg_pose(pos: &Vec3, quat: &Quat) -> (Vec3, Quat) {
     let q = neg_quat(quat);
-    let p = scl3(&rot_vec_quat(pos, &q), -1.0);
+    let p = scl3(&rot_vec_quat(pos, &q), super::misc::minus_one());
     (p, q)
 }
 

@@ -55,7 +55,7 @@ pub fn catenary(x0: &Vec3, x1: &Vec3, gravity: &Vec3, length: f64) -> ([Vec3; NC
         p[1] = *x1;
         return (p, 2);
     }
-    let (up, _) = normalize3(&scl3(gravity, -1.0));
+    let (up, _) = normalize3(&scl3(gravity, crate::math::misc::minus_one()));
     let x01 = sub3(x1, x0);
     let (mut across, norm) = normalize3(&sub3(&x01, &scl3(&up, dot3(&up, &x01))));
     if norm < MINVAL {

@@ -312,7 +312,7 @@ fn contact_forces(c: &Ctx, d: &Data, out: &mut Out, i: usize, con: &mjContact) -
         }
         vec = scl3(&vec, scale);
         if body1 > body2 {
-            vec = scl3(&vec, -1.0);
+            vec = scl3(&vec, crate::math::misc::minus_one());
         }
         let end = add3(&con.pos, &vec);
         out.push(UNKNOWN, i, CAT_DECOR, |g| {

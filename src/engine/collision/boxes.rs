@@ -570,7 +570,10 @@ fn edge_edge(
     }
 
     let r = mul_mat3_t(mat1, &rotmore);
-    let normal = scl3(&mul_mat_vec3(&r, &rnorm), if inside { -1.0 } else { 1.0 });
+    let normal = scl3(
+        &mul_mat_vec3(&r, &rnorm),
+        std::hint::black_box(if inside { -1.0 } else { 1.0 }),
+    );
     let mut frame = [0.0; 6];
     frame[..3].copy_from_slice(&normal);
     con[0].frame = frame;

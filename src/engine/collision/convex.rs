@@ -369,7 +369,7 @@ fn fix_normal_of(con: &mut ContactGeom, geoms: [Option<&ConvexGeom>; 2]) {
     } else if processed[0] {
         normal[0]
     } else if processed[1] {
-        scl3(&normal[1], -1.0)
+        scl3(&normal[1], crate::math::misc::minus_one())
     } else {
         return;
     };

@@ -126,7 +126,7 @@ pub fn plane_cylinder(g1: &GeomPose, g2: &GeomPose, margin: f64, con: &mut [Cont
 
     let mut prjaxis = dot3(&normal, &axis);
     if prjaxis > 0.0 {
-        axis = scl3(&axis, -1.0);
+        axis = scl3(&axis, crate::math::misc::minus_one());
         prjaxis = -prjaxis;
     }
     let dist0 = dot3(&sub3(pos2, g1.pos), &normal);
