@@ -40,11 +40,19 @@ fn frame_skipped() {}
 
 #[cfg(test)]
 fn skipped() {
-    super::tests::SPHERE_SKIPS.with(|n| n.set(n.get() + 1));
+    skipped_many(1);
 }
 #[cfg(not(test))]
 #[inline(always)]
 fn skipped() {}
+
+#[cfg(test)]
+fn skipped_many(k: u32) {
+    super::tests::SPHERE_SKIPS.with(|n| n.set(n.get() + k as usize));
+}
+#[cfg(not(test))]
+#[inline(always)]
+fn skipped_many(_: u32) {}
 
 /// The geom pairs of bodies b1 and b2 (built-in filter passed at the body level, no explicit
 /// pair of theirs, no user contact filter) through collide_geoms, in order.
@@ -103,46 +111,57 @@ pub(super) fn collide_bodies(
         }
         pair
     });
-    for g1 in geoms1.clone() {
-        // a geom that pairs with none of the other body's geoms, or is far from all
-        if !can_pair((contype[g1], conaffinity[g1]), masks2) {
-            continue;
-        }
-        if large_side == 1 {
-            let i = g1 - geoms1.start;
-            if near[i / 64] & (1 << (i % 64)) == 0 {
-                skipped();
+    for base1 in geoms1.clone().step_by(64) {
+        // the geoms of this block of 64: a large body's near the small body's only
+        let len = (geoms1.end - base1).min(64);
+        let all = u64::MAX >> (64 - len);
+        let mut rows = if large_side == 1 {
+            near[(base1 - geoms1.start) / 64]
+        } else {
+            all
+        };
+        skipped_many((all & !rows).count_ones());
+        while rows != 0 {
+            let g1 = base1 + rows.trailing_zeros() as usize;
+            rows &= rows - 1;
+            // a geom that pairs with none of the other body's geoms, or is far from all
+            if !can_pair((contype[g1], conaffinity[g1]), masks2) {
                 continue;
             }
-        }
-        let r1 = m.geom_rbound()[g1];
-        if let Some(s2) = s2 {
-            if r1 > 0.0 && beyond(m, &row(d.geom_xpos, g1), r1, m.geom_margin()[g1], s2) {
-                skipped();
-                continue;
-            }
-        }
-        for base in geoms2.clone().step_by(64) {
-            let mut bits = candidates(m, d, g1, base..geoms2.end.min(base + 64));
-            if large_side == 2 {
-                bits &= near[(base - geoms2.start) / 64];
-            }
-            if let (Some(pair), true) = (&pair, bits != 0) {
-                bits = pairs_not_apart_large(m, pair, g1, base, large_side == 1, bits);
-            }
-            if bits != 0 && framed {
-                let frames = frames.get_or_insert_with(Frames::default);
-                if !reset {
-                    frames.reset(d, (b1, b2), (geoms1.start, geoms2.start));
-                    reset = true;
+            let r1 = m.geom_rbound()[g1];
+            if let Some(s2) = s2 {
+                if r1 > 0.0 && beyond(m, &row(d.geom_xpos, g1), r1, m.geom_margin()[g1], s2) {
+                    skipped();
+                    continue;
                 }
-                bits = pairs_not_apart(m, d, g1 - geoms1.start, bits, frames);
             }
-            while bits != 0 {
-                let g2 = base + bits.trailing_zeros() as usize;
-                bits &= bits - 1;
-                let source = Source::Dynamic { filtered: false };
-                collide_geoms(m, d, top, g1, g2, source, con)?;
+            for base in geoms2.clone().step_by(64) {
+                let mut bits = if large_side == 2 {
+                    let near = near[(base - geoms2.start) / 64];
+                    if near == 0 {
+                        continue;
+                    }
+                    candidates(m, d, g1, base..geoms2.end.min(base + 64)) & near
+                } else {
+                    candidates(m, d, g1, base..geoms2.end.min(base + 64))
+                };
+                if let (Some(pair), true) = (&pair, bits != 0) {
+                    bits = pairs_not_apart_large(m, pair, g1, base, large_side == 1, bits);
+                }
+                if bits != 0 && framed {
+                    let frames = frames.get_or_insert_with(Frames::default);
+                    if !reset {
+                        frames.reset(d, (b1, b2), (geoms1.start, geoms2.start));
+                        reset = true;
+                    }
+                    bits = pairs_not_apart(m, d, g1 - geoms1.start, bits, frames);
+                }
+                while bits != 0 {
+                    let g2 = base + bits.trailing_zeros() as usize;
+                    bits &= bits - 1;
+                    let source = Source::Dynamic { filtered: false };
+                    collide_geoms(m, d, top, g1, g2, source, con)?;
+                }
             }
         }
     }
