@@ -592,7 +592,7 @@ pub unsafe extern "C" fn mju_negPose(
     nonnull!(posres, quatres, pos, quat);
     wr(quatres, math::neg_quat(&rd(quat)));
     wr(posres, math::rot_vec_quat(&rd(pos), &rd(quatres)));
-    wr(posres, math::scl3(&rd(posres), math::misc::minus_one()));
+    wr(posres, math::scl3(&rd(posres), misc::minus_one()));
 }
 
 #[no_mangle]

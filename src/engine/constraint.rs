@@ -12,7 +12,7 @@ use super::{JNT_BALL, JNT_HINGE, JNT_SLIDE};
 use crate::abi::view::Arena;
 use crate::abi::*;
 use crate::math::blas::{add_to_scl, mul_mat_t_vec, mul_mat_vec, norm, sqr_mat_td, transpose};
-use crate::math::misc::kept_or_neg_zero;
+use crate::math::misc::{kept_or_neg_zero, minus_one};
 use crate::math::sparse::{
     combine_sparse, compress_sparse, mirror_lower_sparse, mul_mat_vec_sparse,
     sqr_mat_td_sparse_lower, super_sparse, transpose_sparse, SparseRef,
@@ -506,12 +506,11 @@ fn limits(m: &Model, d: &mut Data, a: &mut Arena) -> Result<(), EngineError> {
                     let a0 = dofadr as i32;
                     let ch = [a0, a0 + 1, a0 + 2];
                     let ch = if sparse {
-                        j[..3].copy_from_slice(&scl3(&axis, crate::math::misc::minus_one()));
+                        j[..3].copy_from_slice(&scl3(&axis, minus_one()));
                         Some(&ch[..])
                     } else {
                         j.fill(0.0);
-                        j[dofadr..dofadr + 3]
-                            .copy_from_slice(&scl3(&axis, crate::math::misc::minus_one()));
+                        j[dofadr..dofadr + 3].copy_from_slice(&scl3(&axis, minus_one()));
                         None
                     };
                     let (p, mg) = ([dist], [margin]);

@@ -570,6 +570,7 @@ fn edge_edge(
     }
 
     let r = mul_mat3_t(mat1, &rotmore);
+    // (a product, as 2.2.2's: `misc::minus_one`)
     let normal = scl3(
         &mul_mat_vec3(&r, &rnorm),
         std::hint::black_box(if inside { -1.0 } else { 1.0 }),

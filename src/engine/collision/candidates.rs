@@ -136,15 +136,16 @@ pub(super) fn collide_bodies(
                 }
             }
             for base in geoms2.clone().step_by(64) {
-                let mut bits = if large_side == 2 {
-                    let near = near[(base - geoms2.start) / 64];
-                    if near == 0 {
-                        continue;
-                    }
-                    candidates(m, d, g1, base..geoms2.end.min(base + 64)) & near
+                // a large body's geoms near the small body's only
+                let near2 = if large_side == 2 {
+                    near[(base - geoms2.start) / 64]
                 } else {
-                    candidates(m, d, g1, base..geoms2.end.min(base + 64))
+                    u64::MAX
                 };
+                if near2 == 0 {
+                    continue;
+                }
+                let mut bits = candidates(m, d, g1, base..geoms2.end.min(base + 64)) & near2;
                 if let (Some(pair), true) = (&pair, bits != 0) {
                     bits = pairs_not_apart_large(m, pair, g1, base, large_side == 1, bits);
                 }
