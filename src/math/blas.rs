@@ -96,33 +96,57 @@ pub fn dot(a: &[f64], b: &[f64], n: usize) -> f64 {
 /// `dot` of four vectors with one (`b`): each sum in `dot`'s order, b read once for all four.
 pub fn dot4(a: [&[f64]; 4], b: &[f64], n: usize) -> [f64; 4] {
     let n4 = n & !3;
+    let s = lane_sum4(a.map(|x| &x[..n4]), &b[..n4]);
+    std::array::from_fn(|r| add_remainder(s[r], &a[r][n4..n], &b[n4..n]))
+}
+
+/// The four partial sums of blocks of four, combined (p2 + p0) + (p3 + p1); length a multiple
+/// of 4. Never -0: each partial sum starts at +0 and a sum is -0 only of two -0. In an AVX build
+/// with 2.2.2's operands in 2.2.2's places, so NaN signs agree too (`lanes`).
+#[inline(always)]
+fn lane_sum(a: &[f64], b: &[f64]) -> f64 {
+    #[cfg(all(target_arch = "x86_64", target_feature = "avx"))]
+    return super::lanes::lane_sum(a, b);
+    #[cfg(not(all(target_arch = "x86_64", target_feature = "avx")))]
+    return lane_sum_portable(a, b);
+}
+
+/// `lane_sum` of four vectors with one `b` (of b's length), b read once.
+#[inline(always)]
+fn lane_sum4(a: [&[f64]; 4], b: &[f64]) -> [f64; 4] {
+    #[cfg(all(target_arch = "x86_64", target_feature = "avx"))]
+    return super::lanes::lane_sum4(a, b);
+    #[cfg(not(all(target_arch = "x86_64", target_feature = "avx")))]
+    return lane_sum4_portable(a, b);
+}
+
+/// The portable form (where the build does not target AVX; the tests compare the two).
+#[cfg_attr(target_feature = "avx", allow(dead_code))]
+#[inline(always)]
+pub(crate) fn lane_sum_portable(a: &[f64], b: &[f64]) -> f64 {
+    let mut p = [0.0f64; 4];
+    for (x, y) in a.chunks_exact(4).zip(b.chunks_exact(4)) {
+        for k in 0..4 {
+            p[k] += y[k] * x[k];
+        }
+    }
+    (p[2] + p[0]) + (p[3] + p[1])
+}
+
+/// The portable form (where the build does not target AVX; the tests compare the two).
+#[cfg_attr(target_feature = "avx", allow(dead_code))]
+#[inline(always)]
+pub(crate) fn lane_sum4_portable(a: [&[f64]; 4], b: &[f64]) -> [f64; 4] {
     let mut p = [[0.0f64; 4]; 4];
-    for (c, y) in b[..n4].chunks_exact(4).enumerate() {
+    for (c, y) in b.chunks_exact(4).enumerate() {
         for (pr, ar) in p.iter_mut().zip(&a) {
             let x = &ar[4 * c..4 * c + 4];
             for k in 0..4 {
-                pr[k] += x[k] * y[k];
+                pr[k] += y[k] * x[k];
             }
         }
     }
-    std::array::from_fn(|r| {
-        let s = (p[r][0] + p[r][2]) + (p[r][1] + p[r][3]);
-        add_remainder(s, &a[r][n4..n], &b[n4..n])
-    })
-}
-
-/// The four partial sums of blocks of four, combined (p0 + p2) + (p1 + p3); length a multiple
-/// of 4. Never -0: each partial sum starts at +0 and a sum is -0 only of two -0.
-#[inline(always)]
-fn lane_sum(a: &[f64], b: &[f64]) -> f64 {
-    let mut p = [0.0f64; 4];
-    for (x, y) in a.chunks_exact(4).zip(b.chunks_exact(4)) {
-        p[0] += x[0] * y[0];
-        p[1] += x[1] * y[1];
-        p[2] += x[2] * y[2];
-        p[3] += x[3] * y[3];
-    }
-    (p[0] + p[2]) + (p[1] + p[3])
+    p.map(|p| (p[2] + p[0]) + (p[3] + p[1]))
 }
 
 /// `s` plus the products of the last (at most 3) elements, summed first.

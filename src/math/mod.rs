@@ -9,11 +9,14 @@
 //! - `sparse`, `chol_sparse`: row-sparse matrices, sparse Cholesky and LU (engine_util_sparse.c,
 //!   engine_util_solve.c);
 //! - `wrap`: tendon wrapping (mju_wrap);
+//! - `lanes`: `blas`'s four-lane dot sums in AVX registers (the x86-64-v3 build);
 
 pub mod blas;
 pub mod chol;
 pub mod chol_sparse;
 pub mod eig3;
+#[cfg(all(target_arch = "x86_64", any(target_feature = "avx", test)))]
+mod lanes;
 pub mod misc;
 pub mod qcqp;
 pub mod quat;

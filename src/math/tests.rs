@@ -1136,3 +1136,56 @@ fn sparse_cholesky_solve_in_two_blocks_as_in_one_pass() {
     }
     assert!(splits > 100, "{splits} forests with two blocks");
 }
+
+/// The AVX four-lane sums agree with the portable ones bit for bit but for the sign of a NaN
+/// (where the CPU has AVX), on random vectors with signed zeros, infinities and NaNs of both
+/// signs, of lengths 0 to 40.
+#[cfg(target_arch = "x86_64")]
+#[test]
+fn avx_lane_sums_as_portable() {
+    use super::blas::{lane_sum4_portable, lane_sum_portable};
+    use super::lanes::{lane_sum4_avx, lane_sum_avx};
+    if !std::is_x86_feature_detected!("avx") {
+        return;
+    }
+    let same = |x: f64, y: f64| x.to_bits() == y.to_bits() || (x.is_nan() && y.is_nan());
+    let mut unit = uniform(5);
+    let special = [
+        0.0,
+        -0.0,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::NAN,
+        -f64::NAN,
+    ];
+    let mut value = move || {
+        let u = unit();
+        if u < 0.1 {
+            special[(unit() * 6.0) as usize % 6]
+        } else if u < 0.2 {
+            -0.0
+        } else {
+            4.0 * unit() - 2.0
+        }
+    };
+    let mut nan = 0;
+    for n in (0..=40).step_by(4) {
+        for _ in 0..200 {
+            let a: Vec<Vec<f64>> = (0..4).map(|_| (0..n).map(|_| value()).collect()).collect();
+            let b: Vec<f64> = (0..n).map(|_| value()).collect();
+            let rows = [&a[0][..], &a[1][..], &a[2][..], &a[3][..]];
+            // SAFETY: the CPU runs AVX (asked above).
+            let four = unsafe { lane_sum4_avx(rows, &b) };
+            let four_portable = lane_sum4_portable(rows, &b);
+            for r in 0..4 {
+                // SAFETY: as above.
+                let one = unsafe { lane_sum_avx(&a[r], &b) };
+                assert_eq!(four[r].to_bits(), one.to_bits());
+                assert!(same(lane_sum_portable(&a[r], &b), one));
+                assert!(same(four_portable[r], one));
+                nan += one.is_nan() as usize;
+            }
+        }
+    }
+    assert!(nan > 1000, "{nan} NaN sums");
+}
