@@ -13,8 +13,10 @@ use crate::math::misc::{max, min};
 use crate::math::vec3::{dot3, sub3};
 use crate::math::Mat3;
 
-use super::spheres::{beyond, body_sphere};
-use super::{can_pair, dynamic_pair_apart, welds_filtered};
+use super::spheres::{body_sphere, spheres_beyond};
+use super::{can_pair, dynamic_pair_apart, margin_override, welds_filtered_by};
+use crate::abi::mjtDisableBit_;
+use crate::engine::disabled;
 
 /// Does the body have a geom with contype or conaffinity?
 pub fn can_collide(m: &Model, b: usize) -> bool {
@@ -226,16 +228,24 @@ fn pairs_without_frame(
     }
     let nbody = m.raw.nbody as usize;
     let (rbound, margin) = (m.geom_rbound(), m.geom_margin());
+    let (contype, conaffinity) = (m.geom_contype(), m.geom_conaffinity());
+    let (weldid, parentid) = (m.body_weldid(), m.body_parentid());
     const LARGE: f64 = 1e30;
     // the swept bodies, each with the masks of all its geoms together (no pair of masks
-    // matches where these do not)
+    // matches where these do not), its weld body and that one's parent's, and its sphere
+    // (`body_sphere`) with the sum of its centre's magnitudes
+    let mut welds = [(0i32, 0i32); MAX_FRAMELESS_BODIES];
+    let mut sphere = [None; MAX_FRAMELESS_BODIES];
     let mut n = 0;
     for b in 1..nbody {
-        let (t, a) = body_masks(m, b);
+        let geoms = body_geoms(m, b);
+        let (t, a) = geoms
+            .clone()
+            .fold((0, 0), |(t, a), g| (t | contype[g], a | conaffinity[g]));
         if t == 0 && a == 0 {
             continue;
         }
-        for g in body_geoms(m, b) {
+        for g in geoms {
             let p = row::<3>(d.geom_xpos, g);
             if !(p.iter().all(|x| x.abs() < LARGE)
                 && (0.0..LARGE).contains(&(rbound[g] + margin[g])))
@@ -243,17 +253,19 @@ fn pairs_without_frame(
                 return Ok(false);
             }
         }
-        if m.body_weldid()[b] == 0 && has_plane_or_hfield(m, b) {
+        let w = weldid[b];
+        if w == 0 && has_plane_or_hfield(m, b) {
             return Ok(false);
         }
         bodies[n] = b as u64;
         masks[n] = pack_masks((t, a));
+        welds[n] = (w, weldid[parentid[w as usize] as usize]);
+        sphere[n] =
+            body_sphere(m, d, b).map(|(c, r, bm)| (c, r, bm, c.iter().map(|x| x.abs()).sum()));
         n += 1;
     }
-    let mut sphere = [None; MAX_FRAMELESS_BODIES];
-    for (s, &b) in sphere.iter_mut().zip(&bodies[..n]) {
-        *s = body_sphere(m, d, b as usize);
-    }
+    let filterparent = !disabled(m, mjtDisableBit_::mjDSBL_FILTERPARENT);
+    let overridden = margin_override(m);
     let start = pairs.n;
     let mut tests = 0;
     for i in 0..n {
@@ -261,13 +273,13 @@ fn pairs_without_frame(
         for j in i + 1..n {
             let b2 = bodies[j] as usize;
             if !can_pair(masks1, unpack_masks(masks[j]))
-                || welds_filtered(m, m.body_weldid()[b1], m.body_weldid()[b2])
+                || welds_filtered_by(filterparent, welds[i], welds[j])
             {
                 continue;
             }
             // every geom pair apart: no contact
             if let (Some(s1), Some(s2)) = (sphere[i], sphere[j]) {
-                if beyond(m, &s1.0, s1.1, s1.2, s2) {
+                if spheres_beyond(overridden, s1, s2) {
                     continue;
                 }
             }

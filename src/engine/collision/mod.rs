@@ -18,6 +18,7 @@ pub mod primitive;
 mod spheres;
 #[cfg(test)]
 mod tests;
+mod world_box;
 use crate::abi::*;
 use crate::engine::hooks;
 use crate::engine::support::warning;
@@ -58,8 +59,18 @@ pub(super) fn welds_filtered(m: &Model, w1: i32, w2: i32) -> bool {
     if w1 == w2 {
         return true;
     }
-    let filterparent = !disabled(m, mjtDisableBit_::mjDSBL_FILTERPARENT) && w1 != 0 && w2 != 0;
-    filterparent && (w1 == wparent(w2) || w2 == wparent(w1))
+    let filterparent = !disabled(m, mjtDisableBit_::mjDSBL_FILTERPARENT);
+    welds_filtered_by(filterparent, (w1, wparent(w1)), (w2, wparent(w2)))
+}
+
+/// `welds_filtered` of (weld body, its parent's weld body) pairs, with filterparent on or off.
+#[inline(always)]
+pub(super) fn welds_filtered_by(
+    filterparent: bool,
+    (w1, p1): (i32, i32),
+    (w2, p2): (i32, i32),
+) -> bool {
+    w1 == w2 || (filterparent && w1 != 0 && w2 != 0 && (w1 == p2 || w2 == p1))
 }
 
 /// Can geoms of these (contype, conaffinity) masks collide (the built-in filter's mask test)?
@@ -362,6 +373,33 @@ pub(super) fn collide_geoms(
     Ok(true)
 }
 
+/// Are bodies b1 and b2 apart by their world boxes (`world_box`), so that none of their
+/// dynamic geom pairs gives a contact? Never where a user contact filter is to see each pair.
+#[inline(always)]
+fn world_boxes_apart(
+    m: &Model,
+    d: &Data,
+    boxes: &mut Option<world_box::WorldBoxes>,
+    b1: usize,
+    b2: usize,
+) -> bool {
+    if b1.max(b2) >= world_box::MAX_BODIES || hooks::contact_filter_set() || !world_box::enabled() {
+        return false;
+    }
+    let boxes = boxes.get_or_insert_with(world_box::WorldBoxes::default);
+    let Some(x) = boxes.get(m, d, b1) else {
+        return false;
+    };
+    let Some(y) = boxes.get(m, d, b2) else {
+        return false;
+    };
+    let apart = world_box::apart(&x, &y, margin_override(m));
+    if apart {
+        world_box::skipped();
+    }
+    apart
+}
+
 /// Contacts a narrow-phase collider reports for one geom pair.
 pub(super) type Contacts = [ContactGeom; narrow::MAX_CONTACT_PAIR];
 
@@ -418,6 +456,7 @@ fn collide_all(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     d.with_scratch(|d, a| -> Result<(), EngineError> {
         let pairs = broadphase::broadphase(m, d, a)?;
         let (mut spheres, mut frames, mut large) = (None, None, None);
+        let mut boxes = None;
         let nexclude = m.raw.nexclude.max(0) as usize;
         let (mut pairadr, mut exadr) = (0usize, 0usize);
         for &bp in pairs.iter() {
@@ -451,6 +490,11 @@ fn collide_all(m: &Model, d: &mut Data) -> Result<(), EngineError> {
             let (w1, w2) = (m.body_weldid()[b1], m.body_weldid()[b2]);
             let welded = welds_filtered(m, w1, w2);
             if welded && !hooks::contact_filter_set() {
+                continue;
+            }
+            // (a single geom pair gets collide_geoms's own tests; the world's geoms, a floor
+            // among them mostly, have no box around them all that is worth finding)
+            if n1 * n2 > 1 && b1 != 0 && world_boxes_apart(m, d, &mut boxes, b1, b2) {
                 continue;
             }
             let (a1, a2) = (m.body_geomadr()[b1] as usize, m.body_geomadr()[b2] as usize);

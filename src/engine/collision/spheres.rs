@@ -2,7 +2,7 @@
 //! a body pair, or a geom and a body, whose spheres are apart beyond rounding has every geom
 //! pair apart by mj_collideGeoms's own bounding-sphere test.
 
-use super::assign_margin;
+use super::margin_override;
 use crate::engine::linalg::row;
 use crate::engine::{Data, Model};
 use crate::math::misc::max;
@@ -64,11 +64,26 @@ pub(super) fn beyond(
     margin: f64,
     (c, radius, bmargin): (Vec3, f64, f64),
 ) -> bool {
+    let sum = |v: &Vec3| v.iter().map(|x| x.abs()).sum::<f64>();
+    spheres_beyond(
+        margin_override(m),
+        (*p, r, margin, sum(p)),
+        (c, radius, bmargin, sum(&c)),
+    )
+}
+
+/// `beyond` of two spheres given with the sums of their centres' magnitudes (centre, radius,
+/// margin, sum), the margin override given.
+#[inline(always)]
+pub(super) fn spheres_beyond(
+    overridden: Option<f64>,
+    (p, r, margin, psum): (Vec3, f64, f64, f64),
+    (c, radius, bmargin, csum): (Vec3, f64, f64, f64),
+) -> bool {
     // (a NaN margin, which collide_geoms may take, makes no test: bmargin is finite)
-    let margin = assign_margin(m, max(bmargin, margin));
+    let margin = overridden.unwrap_or(max(bmargin, margin));
     let reach = r + radius + margin;
-    let scale: f64 = p.iter().chain(&c).map(|x| x.abs()).sum();
-    let bound = reach + SLACK * (r.abs() + radius + margin.abs() + scale);
-    let dif = sub3(p, &c);
+    let bound = reach + SLACK * (r.abs() + radius + margin.abs() + psum + csum);
+    let dif = sub3(&p, &c);
     bound > 0.0 && dot3(&dif, &dif) > bound * bound
 }
