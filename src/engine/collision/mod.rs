@@ -494,7 +494,7 @@ fn collide_all(m: &Model, d: &mut Data) -> Result<(), EngineError> {
             }
             // (a single geom pair gets collide_geoms's own tests; the world's geoms, a floor
             // among them mostly, have no box around them all that is worth finding)
-            if n1 * n2 > 1 && b1 != 0 && world_boxes_apart(m, d, &mut boxes, b1, b2) {
+            if (n1 > 1 || n2 > 1) && b1 != 0 && world_boxes_apart(m, d, &mut boxes, b1, b2) {
                 continue;
             }
             let (a1, a2) = (m.body_geomadr()[b1] as usize, m.body_geomadr()[b2] as usize);
