@@ -225,7 +225,8 @@ pub fn alloc_data(m: &mjModel) -> Result<*mut mjData, String> {
     // both zeroed, so that no view ever reads uninitialized memory (scratch taken unzeroed by
     // Arena::alloc_stale, arrays before mj_resetData); large ones are fresh pages, untouched
     // until the simulation reaches them
-    let buffer_size = data_buffer_size(nbuffer);
+    let rows = m.nu.max(0) as usize;
+    let buffer_size = data_buffer_size(nbuffer, rows);
     let mapped = maps(buffer_size);
     let buffer = alloc_large(buffer_size, false);
     let stack = alloc_large((nstack * 8).max(1), false);
@@ -248,20 +249,28 @@ pub fn alloc_data(m: &mjModel) -> Result<*mut mjData, String> {
         set_data_pointers(m, &mut *d);
         ViewSlot::init(&*d);
         ViewSlot::set_mapped(&*d, mapped);
+        ViewSlot::set_moment_spans(&*d, rows);
     }
     Ok(d)
 }
 
-/// Bytes of an mjData buffer of `nbuffer`: the arrays, then the view slot.
-fn data_buffer_size(nbuffer: usize) -> usize {
-    ViewSlot::offset(nbuffer) + std::mem::size_of::<ViewSlot>()
+/// Bytes of an mjData buffer of `nbuffer` for `rows` actuators: the arrays, then the view
+/// slot and its moment spans.
+fn data_buffer_size(nbuffer: usize, rows: usize) -> usize {
+    ViewSlot::offset(nbuffer)
+        + std::mem::size_of::<ViewSlot>()
+        + rows * std::mem::size_of::<[u32; 2]>()
 }
 
 /// # Safety
 /// `d` is NULL or came from `alloc_data`.
 pub unsafe fn delete_data(d: *mut mjData) {
     if !d.is_null() {
-        free_large((*d).buffer, data_buffer_size((*d).nbuffer.max(0) as usize));
+        let rows = ViewSlot::moment_rows(&*d);
+        free_large(
+            (*d).buffer,
+            data_buffer_size((*d).nbuffer.max(0) as usize, rows),
+        );
         free_large(
             (*d).stack as *mut c_void,
             ((*d).nstack.max(0) as usize * 8).max(1),
@@ -299,6 +308,7 @@ pub unsafe fn copy_data(
     (*dest).stack = stack;
     set_data_pointers(m, &mut *dest);
     ViewSlot::init(&*dest);
+    ViewSlot::forget_moments(&*dest);
     copy_data_arrays(m, &*dest, src);
     Ok(dest)
 }
@@ -308,6 +318,7 @@ pub unsafe fn copy_data(
 /// # Safety
 /// `d` came from `alloc_data`.
 pub unsafe fn fill_buffer(d: &mut mjData, byte: u8) {
+    ViewSlot::forget_moments(d);
     std::ptr::write_bytes(d.buffer as *mut u8, byte, d.nbuffer as usize);
 }
 

@@ -63,6 +63,14 @@ macro_rules! model_views {
         }
 
         impl<'a> Model<'a> {
+            /// The geoms of body `b` (body_geomadr on, body_geomnum of them; none where the
+            /// body has none).
+            #[inline(always)]
+            pub fn body_geoms(&self, b: usize) -> std::ops::Range<usize> {
+                let adr = self.body_geomadr()[b].max(0) as usize;
+                adr..adr + self.body_geomnum()[b].max(0) as usize
+            }
+
             /// `mesh_vert` as points (x, y, z).
             #[inline(always)]
             pub fn mesh_vert_xyz(&self) -> &'a [[f32; 3]] {
@@ -170,6 +178,7 @@ macro_rules! data_views {
                 // own slice, the gaps between them (no slice's) through the buffer pointer;
                 // all-zero bytes are a valid value of every element type (numbers, mjContact).
                 unsafe {
+                    ViewSlot::forget_moments(self.raw);
                     let mut pages = ViewSlot::page_map(self.raw);
                     let buffer = self.raw.buffer as *mut u8;
                     let mut done = 0usize;
@@ -252,7 +261,21 @@ pub struct ViewSlot {
     /// The buffer is a mapping of its own (`memory::alloc_large`): pages never written read
     /// as zeros.
     mapped: bool,
+    /// Of each actuator's row of actuator_moment, the columns `[lo, hi)` outside which the last
+    /// mj_transmission left it zero (`moment_rows` of them, right after the slot); valid while
+    /// `moments_known`, which anything else that writes the buffer clears.
+    moment_spans: *mut [u32; 2],
+    moment_rows: usize,
+    moments_known: bool,
     image: std::mem::MaybeUninit<Data<'static>>,
+}
+
+/// The record of `ViewSlot::moment_spans`, borrowed with actuator_moment (`Data::moments`).
+pub struct MomentSpans<'a> {
+    /// The spans hold: every row is zero outside its span.
+    pub known: &'a mut bool,
+    /// One `[lo, hi)` per actuator (empty where the data has no room for the model's).
+    pub spans: &'a mut [[u32; 2]],
 }
 
 /// Marks a slot in use while alive; a panic through it forgets the view (it may have been
@@ -302,6 +325,34 @@ impl ViewSlot {
         (*slot).buffer = d.buffer;
         (*slot).model = std::ptr::null();
         (*slot).busy = false;
+    }
+
+    /// Gives `d` room for `rows` moment spans, after the slot (`alloc_data` made it), not known
+    /// yet.
+    ///
+    /// # Safety
+    /// As `init`; the buffer has that room.
+    pub unsafe fn set_moment_spans(d: &mjData, rows: usize) {
+        let slot = Self::of(d);
+        (*slot).moment_spans = slot.add(1) as *mut [u32; 2];
+        (*slot).moment_rows = rows;
+        (*slot).moments_known = false;
+    }
+
+    /// The number of moment spans `d` has room for (`set_moment_spans`).
+    ///
+    /// # Safety
+    /// As `init`.
+    pub unsafe fn moment_rows(d: &mjData) -> usize {
+        (*Self::of(d)).moment_rows
+    }
+
+    /// Forgets what the moment spans say: `d`'s buffer was written by other means.
+    ///
+    /// # Safety
+    /// As `init`.
+    pub unsafe fn forget_moments(d: &mjData) {
+        (*Self::of(d)).moments_known = false;
     }
 
     /// Records whether `d`'s buffer is a mapping of its own.
@@ -360,6 +411,22 @@ impl<'a> Data<'a> {
 }
 
 impl Data<'_> {
+    /// actuator_moment with the record of where its rows may be nonzero.
+    pub fn moments(&mut self) -> (&mut [f64], MomentSpans<'_>) {
+        // SAFETY: `new`'s contract: the data came from `alloc_data`, which made the slot and
+        // its record of `moment_rows` spans, memory apart from every array.
+        unsafe {
+            let slot = &mut *ViewSlot::of(self.raw);
+            let spans = if slot.moment_spans.is_null() {
+                &mut []
+            } else {
+                std::slice::from_raw_parts_mut(slot.moment_spans, slot.moment_rows)
+            };
+            let known = &mut slot.moments_known;
+            (&mut *self.actuator_moment, MomentSpans { known, spans })
+        }
+    }
+
     /// Runs `f` with this data and a scratch arena scope taken from its stack; everything `f`
     /// allocates is released afterwards (mjMARKSTACK / mjFREESTACK).
     pub fn with_scratch<R>(&mut self, f: impl FnOnce(&mut Self, &mut Arena) -> R) -> R {

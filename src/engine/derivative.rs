@@ -638,8 +638,7 @@ fn ellipsoid_fluid_vel(m: &Model, d: &Data, bj: &mut BodyJac, dfdv: &mut [f64], 
     let nv = m.raw.nv as usize;
     bj.set_body(m, b);
     let (rho, visc) = (m.raw.opt.density, m.raw.opt.viscosity);
-    let adr = m.body_geomadr()[b].max(0) as usize;
-    for g in adr..adr + m.body_geomnum()[b] as usize {
+    for g in m.body_geoms(b) {
         let s = geom_semi_axes(m, g);
         let c = GeomFluid::read(m, g);
         if c.interaction == 0.0 {

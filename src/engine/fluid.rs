@@ -37,8 +37,7 @@ impl GeomFluid {
 
 /// Does any geom of body `b` use the ellipsoid model?
 pub fn uses_ellipsoid(m: &Model, b: usize) -> bool {
-    let adr = m.body_geomadr()[b].max(0) as usize;
-    (0..m.body_geomnum()[b] as usize).any(|j| m.geom_fluid()[mjNFLUID * (adr + j)] > 0.0)
+    m.body_geoms(b).any(|g| m.geom_fluid()[mjNFLUID * g] > 0.0)
 }
 
 /// Semi-axes of the ellipsoid that stands for geom `g` (mju_geomSemiAxes).
@@ -261,8 +260,7 @@ fn inertia_box_fluid(m: &Model, d: &mut Data, b: usize) -> Result<(), EngineErro
 
 /// Ellipsoid model of the geoms of body `b` (mj_ellipsoidFluidModel).
 fn ellipsoid_fluid(m: &Model, d: &mut Data, b: usize) -> Result<(), EngineError> {
-    let adr = m.body_geomadr()[b].max(0) as usize;
-    for g in adr..adr + m.body_geomnum()[b] as usize {
+    for g in m.body_geoms(b) {
         let s = geom_semi_axes(m, g);
         let c = GeomFluid::read(m, g);
         if c.interaction == 0.0 {

@@ -309,8 +309,7 @@ fn set_stat(m: &Model, d: &Data, body: &mut [f64]) -> mjStatistic {
     }
     body[0] = 0.0;
     for i in 1..nbody {
-        let adr = m.body_geomadr()[i].max(0) as usize;
-        for g in adr..adr + m.body_geomnum()[i] as usize {
+        for g in m.body_geoms(i) {
             if m.geom_rbound()[g] > 0.0 {
                 body[i] = max(
                     body[i],

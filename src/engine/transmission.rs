@@ -71,7 +71,7 @@ fn actuator_transmission(m: &Model, d: &mut Data) -> Result<(), EngineError> {
         // no scratch needed: the common case of motors on joints and tendons (the stack
         // still counts the three Jacobians 2.2.2 takes)
         d.arena.account(9 * nv)?;
-        d.actuator_moment.fill(0.0);
+        clear_moments(m, d);
         for (i, &t) in trntype.iter().enumerate() {
             if t == TRN_TENDON {
                 tendon(m, d, i);
@@ -91,7 +91,7 @@ fn actuator_transmission(m: &Model, d: &mut Data) -> Result<(), EngineError> {
             moment_tmp: None,
             body: None,
         };
-        d.actuator_moment.fill(0.0);
+        clear_moments(m, d);
         for i in 0..nu {
             let t = m.actuator_trntype()[i];
             match t {
@@ -120,6 +120,40 @@ fn actuator_transmission(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     })
 }
 
+/// Zeroes actuator_moment for the transmissions to write into: of a row the last one left
+/// nonzero only in some columns (a joint's dofs, as `Data::moments` records), those columns;
+/// of the others the whole row; the whole matrix where that is not known (a reset, a copy, a
+/// data's first step, a failed call). The rows are 2.2.2's: zero but where written.
+fn clear_moments(m: &Model, d: &mut Data) {
+    let nv = m.raw.nv as usize;
+    let nu = m.raw.nu as usize;
+    let (moment, rec) = d.moments();
+    let known = std::mem::take(rec.known);
+    if !known {
+        moment.fill(0.0);
+    }
+    if rec.spans.len() != nu {
+        return;
+    }
+    for (i, (row, span)) in moment
+        .chunks_exact_mut(nv.max(1))
+        .zip(rec.spans.iter_mut())
+        .enumerate()
+    {
+        let (lo, hi) = match m.actuator_trntype()[i] {
+            TRN_JOINT | TRN_JOINTINPARENT => joint_columns(m, i),
+            _ => (0, nv),
+        };
+        if known {
+            let (a, b) = (span[0] as usize, span[1] as usize);
+            row[a.min(b).min(nv)..b.min(nv)].fill(0.0);
+            row[lo.min(nv)..hi.min(nv)].fill(0.0);
+        }
+        *span = [lo as u32, hi as u32];
+    }
+    *rec.known = true;
+}
+
 /// The columns `lo..hi` of actuator `i`'s moment row that `transmission` may set (the rest
 /// it leaves zero): the joint's dofs, the tendon's sparse Jacobian columns, else all.
 /// `ten_j`: the sparse tendon Jacobian's rownnz, rowadr and colind.
@@ -127,15 +161,7 @@ pub fn moment_span(m: &Model, ten_j: (&[i32], &[i32], &[i32]), i: usize) -> (usi
     let nv = m.raw.nv as usize;
     let id = m.actuator_trnid()[2 * i] as usize;
     match m.actuator_trntype()[i] {
-        TRN_JOINT | TRN_JOINTINPARENT => {
-            let dadr = m.jnt_dofadr()[id] as usize;
-            let ndof = match m.jnt_type()[id] {
-                JNT_SLIDE | JNT_HINGE => 1,
-                JNT_BALL => 3,
-                _ => 6,
-            };
-            (dadr, dadr + ndof)
-        }
+        TRN_JOINT | TRN_JOINTINPARENT => joint_columns(m, i),
         TRN_TENDON if is_sparse(m) => {
             let (rownnz, rowadr, colind) = ten_j;
             let adr = rowadr[id] as usize;
@@ -147,6 +173,18 @@ pub fn moment_span(m: &Model, ten_j: (&[i32], &[i32], &[i32]), i: usize) -> (usi
         }
         _ => (0, nv),
     }
+}
+
+/// The dofs of the joint of joint actuator `i`: the columns its moment row may set.
+fn joint_columns(m: &Model, i: usize) -> (usize, usize) {
+    let id = m.actuator_trnid()[2 * i] as usize;
+    let dadr = m.jnt_dofadr()[id] as usize;
+    let ndof = match m.jnt_type()[id] {
+        JNT_SLIDE | JNT_HINGE => 1,
+        JNT_BALL => 3,
+        _ => 6,
+    };
+    (dadr, dadr + ndof)
 }
 
 /// Slider-crank: length of the slider along its axis, with its derivatives; returns length.

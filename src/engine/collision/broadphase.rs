@@ -24,20 +24,15 @@ pub fn can_collide(m: &Model, b: usize) -> bool {
 }
 
 /// The geoms of a body.
-fn body_geoms(m: &Model, b: usize) -> std::ops::Range<usize> {
-    let adr = m.body_geomadr()[b].max(0) as usize;
-    adr..adr + m.body_geomnum()[b].max(0) as usize
-}
-
 /// The contype and conaffinity masks of all of a body's geoms together.
 fn body_masks(m: &Model, b: usize) -> (i32, i32) {
-    body_geoms(m, b).fold((0, 0), |(t, a), g| {
+    m.body_geoms(b).fold((0, 0), |(t, a), g| {
         (t | m.geom_contype()[g], a | m.geom_conaffinity()[g])
     })
 }
 
 fn has_plane_or_hfield(m: &Model, b: usize) -> bool {
-    body_geoms(m, b).any(|g| {
+    m.body_geoms(b).any(|g| {
         let t = m.geom_type()[g];
         t == mjtGeom_::mjGEOM_PLANE as i32 || t == mjtGeom_::mjGEOM_HFIELD as i32
     })
@@ -117,7 +112,7 @@ pub fn merge_sort<T: Copy>(items: &mut [T], tmp: &mut [T], le: &impl Fn(&T, &T) 
 /// Bounding box of a body's geoms (with margins) along the rows of `frame`: (min, max) per axis.
 fn body_aabb(m: &Model, d: &Data, b: usize, frame: &Mat3) -> [f64; 6] {
     let mut aabb = [0.0; 6];
-    for (i, g) in body_geoms(m, b).enumerate() {
+    for (i, g) in m.body_geoms(b).enumerate() {
         let pos = row::<3>(d.geom_xpos, g);
         let r = m.geom_rbound()[g] + m.geom_margin()[g];
         for j in 0..3 {
@@ -238,7 +233,7 @@ fn pairs_without_frame(
     let mut sphere = [None; MAX_FRAMELESS_BODIES];
     let mut n = 0;
     for b in 1..nbody {
-        let geoms = body_geoms(m, b);
+        let geoms = m.body_geoms(b);
         let (t, a) = geoms
             .clone()
             .fold((0, 0), |(t, a), g| (t | contype[g], a | conaffinity[g]));
@@ -283,7 +278,7 @@ fn pairs_without_frame(
                     continue;
                 }
             }
-            match frameless_pair(m, d, body_geoms(m, b1), body_geoms(m, b2), &mut tests) {
+            match frameless_pair(m, d, m.body_geoms(b1), m.body_geoms(b2), &mut tests) {
                 Some(true) => pairs.add(m, true, b1, b2)?,
                 Some(false) => {}
                 None => {

@@ -18,9 +18,8 @@ const SLACK: f64 = 1e-9;
 #[inline(always)]
 pub(super) fn body_sphere(m: &Model, d: &Data, b: usize) -> Option<(Vec3, f64, f64)> {
     let c = row::<3>(d.xpos, b);
-    let adr = m.body_geomadr()[b].max(0) as usize;
     let (mut radius, mut margin, mut ok) = (0.0f64, f64::NEG_INFINITY, true);
-    for g in adr..adr + m.body_geomnum()[b].max(0) as usize {
+    for g in m.body_geoms(b) {
         let (r, gmargin) = (m.geom_rbound()[g], m.geom_margin()[g]);
         let dif = sub3(&row(d.geom_xpos, g), &c);
         let extent = dot3(&dif, &dif).sqrt() + r;

@@ -93,12 +93,10 @@ impl WorldBoxes {
 }
 
 fn body_box(m: &Model, d: &Data, b: usize) -> Option<BodyBox> {
-    let adr = m.body_geomadr()[b].max(0) as usize;
-    let geoms = adr..adr + m.body_geomnum()[b].max(0) as usize;
     let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
     let mut margin = f64::NEG_INFINITY;
     let mut finite = true;
-    for g in geoms {
+    for g in m.body_geoms(b) {
         let h = box_of(m, g)?;
         let (c, mat) = (row_ref::<3>(d.geom_xpos, g), row_ref::<9>(d.geom_xmat, g));
         let s = slack(h[0] + h[1] + h[2], c);
