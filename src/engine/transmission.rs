@@ -120,10 +120,11 @@ fn actuator_transmission(m: &Model, d: &mut Data) -> Result<(), EngineError> {
     })
 }
 
-/// Zeroes actuator_moment for the transmissions to write into: of a row the last one left
-/// nonzero only in some columns (a joint's dofs, as `Data::moments` records), those columns;
-/// of the others the whole row; the whole matrix where that is not known (a reset, a copy, a
-/// data's first step, a failed call). The rows are 2.2.2's: zero but where written.
+/// Zeroes actuator_moment for the transmissions to write into: of a joint actuator's row,
+/// which `joint` writes in its joint's columns, the columns the last call wrote (as
+/// `Data::moments` records) where they were others; the other rows whole; the whole matrix
+/// where the record is not known (a reset, a copy, a data's first step, a failed call). The
+/// rows are 2.2.2's: zero but where written.
 fn clear_moments(m: &Model, d: &mut Data) {
     let nv = m.raw.nv as usize;
     let nu = m.raw.nu as usize;
@@ -140,14 +141,20 @@ fn clear_moments(m: &Model, d: &mut Data) {
         .zip(rec.spans.iter_mut())
         .enumerate()
     {
-        let (lo, hi) = match m.actuator_trntype()[i] {
-            TRN_JOINT | TRN_JOINTINPARENT => joint_columns(m, i),
-            _ => (0, nv),
+        let on_joint = matches!(m.actuator_trntype()[i], TRN_JOINT | TRN_JOINTINPARENT);
+        let (lo, hi) = if on_joint {
+            joint_columns(m, i)
+        } else {
+            (0, nv)
         };
         if known {
             let (a, b) = (span[0] as usize, span[1] as usize);
-            row[a.min(b).min(nv)..b.min(nv)].fill(0.0);
-            row[lo.min(nv)..hi.min(nv)].fill(0.0);
+            if !on_joint {
+                row.fill(0.0);
+            } else if (a, b) != (lo, hi) {
+                // `joint` writes its own columns whole
+                row[a.min(b).min(nv)..b.min(nv)].fill(0.0);
+            }
         }
         *span = [lo as u32, hi as u32];
     }
