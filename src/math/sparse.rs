@@ -324,7 +324,12 @@ pub fn compress_sparse(
     }
 }
 
-/// res = mat^T (mat is nr x nc); res is laid out with stride nr, then compressed.
+/// res = mat^T (mat is nr x nc), compressed. Leaves res and res_colind as 2.2.2's transpose
+/// does, which writes row rt at rt * nr and then moves the rows to the front: the compressed
+/// rows first, then, past them, what of each row at rt * nr the moves did not write over.
+/// Written here in that end state directly: rows counted, filled in place, then each row's
+/// part past the compressed ones copied out row by row (2.2.2's scatter over nc strides of nr
+/// touches a page per entry).
 #[allow(clippy::too_many_arguments)]
 pub fn transpose_sparse(
     res: &mut [f64],
@@ -338,21 +343,40 @@ pub fn transpose_sparse(
     rowadr: &[i32],
     colind: &[i32],
 ) {
-    res_rownnz[..nc].fill(0);
-    for (rt, a) in res_rowadr[..nc].iter_mut().enumerate() {
-        *a = (rt * nr) as i32;
+    let (res_rownnz, res_rowadr) = (&mut res_rownnz[..nc], &mut res_rowadr[..nc]);
+    res_rownnz.fill(0);
+    for r in 0..nr {
+        let adr = u(rowadr[r]);
+        for &c in &colind[adr..adr + u(rownnz[r])] {
+            res_rownnz[u(c)] += 1;
+        }
+    }
+    // each row's end, then filled back to its start
+    let mut nnz = 0i32;
+    for (a, &n) in res_rowadr.iter_mut().zip(res_rownnz.iter()) {
+        *a = nnz;
+        nnz += n;
     }
     for r in 0..nr {
         let adr = u(rowadr[r]);
-        for ci in 0..u(rownnz[r]) {
-            let rt = u(colind[adr + ci]);
-            let k = rt * nr + u(res_rownnz[rt]);
+        let n = u(rownnz[r]);
+        for (&c, &v) in colind[adr..adr + n].iter().zip(&mat[adr..adr + n]) {
+            let k = u(res_rowadr[u(c)]);
             res_colind[k] = r as i32;
-            res[k] = mat[adr + ci];
-            res_rownnz[rt] += 1;
+            res[k] = v;
+            res_rowadr[u(c)] += 1;
         }
     }
-    compress_sparse(res, nc, res_rownnz, res_rowadr, res_colind);
+    let nnz = u(nnz);
+    for rt in 0..nc {
+        let n = u(res_rownnz[rt]);
+        res_rowadr[rt] -= n as i32;
+        let (from, to) = (u(res_rowadr[rt]), rt * nr);
+        // the part of row rt at rt * nr that lies past the compressed rows
+        let skip = nnz.saturating_sub(to).min(n);
+        res.copy_within(from + skip..from + n, to + skip);
+        res_colind.copy_within(from + skip..from + n, to + skip);
+    }
 }
 
 /// rowsuper[r] = number of following rows with the same pattern as row r.

@@ -1208,3 +1208,68 @@ fn avx_lane_sums_as_portable() {
         "{checked} AVX sums checked"
     );
 }
+
+/// The transpose leaves its whole output as 2.2.2's does (every row written at stride nr,
+/// then the rows moved to the front; mjData shows the leftovers past the compressed rows):
+/// random patterns of Jacobian shapes, the outputs holding the same old values beforehand.
+#[test]
+fn transpose_sparse_leaves_what_strided_rows_leave() {
+    use super::sparse::*;
+    let mut rng = Rng(11);
+    for case in 0..300 {
+        let nr = 1 + case % 37;
+        let nc = 1 + (case * 7) % 29;
+        let (mut mat, mut nnz, mut adr, mut col) = (vec![], vec![0; nr], vec![0; nr], vec![]);
+        for r in 0..nr {
+            adr[r] = mat.len() as i32;
+            for c in 0..nc {
+                if rng.next() > 0.8 + (case % 3) as f64 * 0.5 {
+                    mat.push(rng.next());
+                    col.push(c as i32);
+                }
+            }
+            nnz[r] = mat.len() as i32 - adr[r];
+        }
+        let old: Vec<f64> = (0..nr * nc + 5).map(|_| rng.next()).collect();
+        let old_col: Vec<i32> = (0..nr * nc + 5).map(|i| -(i as i32)).collect();
+        // 2.2.2's way: rows at rt * nr, then compressed
+        let (mut want, mut want_col) = (old.clone(), old_col.clone());
+        let (mut want_nnz, mut want_adr) = (vec![0; nc], vec![0; nc]);
+        for (rt, a) in want_adr.iter_mut().enumerate() {
+            *a = (rt * nr) as i32;
+        }
+        for r in 0..nr {
+            for i in adr[r] as usize..(adr[r] + nnz[r]) as usize {
+                let rt = col[i] as usize;
+                let k = rt * nr + want_nnz[rt] as usize;
+                want[k] = mat[i];
+                want_col[k] = r as i32;
+                want_nnz[rt] += 1;
+            }
+        }
+        compress_sparse(&mut want, nc, &want_nnz, &mut want_adr, &mut want_col);
+        let (mut got, mut got_col) = (old.clone(), old_col.clone());
+        let (mut got_nnz, mut got_adr) = (vec![7; nc], vec![7; nc]);
+        transpose_sparse(
+            &mut got,
+            &mat,
+            nr,
+            nc,
+            &mut got_nnz,
+            &mut got_adr,
+            &mut got_col,
+            &nnz,
+            &adr,
+            &col,
+        );
+        assert_eq!(got_nnz, want_nnz, "case {case}");
+        assert_eq!(got_adr, want_adr, "case {case}");
+        assert_eq!(got_col, want_col, "case {case}");
+        assert!(
+            got.iter()
+                .zip(&want)
+                .all(|(a, b)| a.to_bits() == b.to_bits()),
+            "case {case}"
+        );
+    }
+}
