@@ -261,16 +261,15 @@ pub struct ViewSlot {
     /// The buffer is a mapping of its own (`memory::alloc_large`): pages never written read
     /// as zeros.
     mapped: bool,
-    /// Of each actuator's row of actuator_moment, the columns `[lo, hi)` outside which the last
-    /// mj_transmission left it zero (`moment_rows` of them, right after the slot); valid while
-    /// `moments_known`, which anything else that writes the buffer clears.
-    moment_spans: *mut [u32; 2],
+    /// Room right after the slot for `moment_rows` spans `[lo, hi)`: of each actuator's row of
+    /// actuator_moment, the columns outside which the last mj_transmission left it zero; valid
+    /// while `moments_known`, which anything else that writes the buffer clears.
     moment_rows: usize,
     moments_known: bool,
     image: std::mem::MaybeUninit<Data<'static>>,
 }
 
-/// The record of `ViewSlot::moment_spans`, borrowed with actuator_moment (`Data::moments`).
+/// The record of moment spans after a `ViewSlot`, borrowed with actuator_moment (`Data::moments`).
 pub struct MomentSpans<'a> {
     /// The spans hold: every row is zero outside its span.
     pub known: &'a mut bool,
@@ -334,7 +333,6 @@ impl ViewSlot {
     /// As `init`; the buffer has that room.
     pub unsafe fn set_moment_spans(d: &mjData, rows: usize) {
         let slot = Self::of(d);
-        (*slot).moment_spans = slot.add(1) as *mut [u32; 2];
         (*slot).moment_rows = rows;
         (*slot).moments_known = false;
     }
@@ -417,11 +415,8 @@ impl Data<'_> {
         // its record of `moment_rows` spans, memory apart from every array.
         unsafe {
             let slot = &mut *ViewSlot::of(self.raw);
-            let spans = if slot.moment_spans.is_null() {
-                &mut []
-            } else {
-                std::slice::from_raw_parts_mut(slot.moment_spans, slot.moment_rows)
-            };
+            let first = (slot as *mut ViewSlot).add(1) as *mut [u32; 2];
+            let spans = std::slice::from_raw_parts_mut(first, slot.moment_rows);
             let known = &mut slot.moments_known;
             (&mut *self.actuator_moment, MomentSpans { known, spans })
         }

@@ -23,7 +23,6 @@ pub fn can_collide(m: &Model, b: usize) -> bool {
     body_masks(m, b) != (0, 0)
 }
 
-/// The geoms of a body.
 /// The contype and conaffinity masks of all of a body's geoms together.
 fn body_masks(m: &Model, b: usize) -> (i32, i32) {
     m.body_geoms(b).fold((0, 0), |(t, a), g| {
