@@ -128,6 +128,62 @@ fn speed_against_the_reference() {
     eprintln!("{msg}");
 }
 
+/// The work a step did, from bench.c's stage mode: its "count" lines (name, value).
+fn work_counts(prog: &Path, model: &Path) -> Vec<(String, f64)> {
+    let m = model.to_string_lossy();
+    let o = run(prog, &["300", "0", &m, "stages"], &[], 600);
+    let out = text(&o.stdout);
+    let counts: Vec<_> = out
+        .lines()
+        .filter_map(|l| l.strip_prefix("count "))
+        .filter_map(|l| {
+            let (name, v) = l.rsplit_once(' ')?;
+            Some((name.to_string(), v.parse().ok()?))
+        })
+        .collect();
+    assert!(!counts.is_empty(), "no counts from {prog:?} on {m}: {out}");
+    counts
+}
+
+/// bench's table of the work a step does (capi-tests/bench.c's stage mode): contacts,
+/// constraint rows and solver iterations identical on ours and 2.2.2 (the same trajectory) on
+/// contact scenes of every solver, and MuJoCo 4.0.0's islands and its largest island's
+/// iterations beside them.
+#[test]
+fn bench_counts_the_work_of_the_reference() {
+    let _quiet = QUIET.lock();
+    let src = [root().join("capi-tests/bench.c")];
+    let reference = compile_c(&src, "bench", Lib::Ref);
+    let ours = compile_c(&src, "bench", Lib::Ours);
+    let names = ["contacts", "constraint rows", "solver iterations"];
+    for file in [
+        "contact_newton_pyramidal_sparse_ns5.xml",
+        "contact_cg_pyramidal_sparse_ns0.xml",
+        "contact_pgs_elliptic_sparse_ns5.xml",
+        "composite_solids.xml",
+    ] {
+        let model = root().join("models/extra").join(file);
+        let ours_counts = work_counts(&ours, &model);
+        assert_eq!(ours_counts, work_counts(&reference, &model), "{file}");
+        let listed: Vec<_> = ours_counts.iter().map(|(n, _)| n.as_str()).collect();
+        assert_eq!(listed, names, "{file}");
+        assert!(
+            ours_counts.iter().all(|(_, v)| *v > 1.0),
+            "{file}: {ours_counts:?}"
+        );
+    }
+    if let Some(v4) = compile_c_v4(&src, "bench") {
+        let model = root().join("models/extra/contact_newton_pyramidal_sparse_ns5.xml");
+        let counts = work_counts(&v4, &model);
+        let listed: Vec<_> = counts.iter().map(|(n, _)| n.as_str()).collect();
+        assert_eq!(
+            listed,
+            [&names[..], &["islands", "largest island iterations"]].concat(),
+        );
+        assert!(counts.iter().all(|(_, v)| *v > 0.0), "{counts:?}");
+    }
+}
+
 /// capi-tests/ab.c (bench --ab): both libraries in one process, alternating blocks of steps.
 #[test]
 fn one_process_ratios() {
