@@ -495,7 +495,12 @@ fn build_profile() {
     let o3 = ["-C", "opt-level=3"];
     assert!(wrapper(recorded_llvm, &o3).contains(&flag), "{flag}");
     assert!(wrapper(recorded_llvm + 1, &o3).contains(&flag), "{flag}");
+    // with the profile, no small loop vectorized by masking its tail, loops aligned
+    let tuned = ["-Cllvm-args=-vectorizer-min-trip-count=2", "-Cllvm-args=-align-loops=64"];
+    let profiled = wrapper(recorded_llvm, &o3);
+    assert!(tuned.iter().all(|t| profiled.contains(t)), "{profiled}");
     assert!(!wrapper(recorded_llvm - 1, &o3).contains("profile-use"));
+    assert!(!wrapper(recorded_llvm - 1, &o3).contains("llvm-args"));
     assert!(!wrapper(recorded_llvm, &["-C", "opt-level=1"]).contains("profile-use"));
     let generate = ["-C", "opt-level=3", "-Cprofile-generate=/x"];
     assert!(!wrapper(recorded_llvm, &generate).contains("profile-use"));
