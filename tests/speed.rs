@@ -496,7 +496,10 @@ fn build_profile() {
     assert!(wrapper(recorded_llvm, &o3).contains(&flag), "{flag}");
     assert!(wrapper(recorded_llvm + 1, &o3).contains(&flag), "{flag}");
     // with the profile, no small loop vectorized by masking its tail, loops aligned
-    let tuned = ["-Cllvm-args=-vectorizer-min-trip-count=2", "-Cllvm-args=-align-loops=64"];
+    let tuned = [
+        "-Cllvm-args=-vectorizer-min-trip-count=2",
+        "-Cllvm-args=-align-loops=64",
+    ];
     let profiled = wrapper(recorded_llvm, &o3);
     assert!(tuned.iter().all(|t| profiled.contains(t)), "{profiled}");
     assert!(!wrapper(recorded_llvm - 1, &o3).contains("profile-use"));
